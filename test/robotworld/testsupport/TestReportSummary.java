@@ -1,0 +1,105 @@
+package robotworld.testsupport;
+
+import java.io.IOException;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import javax.xml.XMLConstants;
+import javax.xml.parsers.DocumentBuilderFactory;
+import org.w3c.dom.Document;
+import org.w3c.dom.Element;
+import org.w3c.dom.NodeList;
+
+/**
+ * Reads the legacy-xml reports that Ant's {@code <junitlauncher>} writes and prints what that task does not:
+ * every failed or errored test with its assertion message and the top of its stack trace, then one closing
+ * line {@code tests: N passed, N failed, N skipped}. Exits 1 when a test failed or no test ran at all.
+ */
+public final class TestReportSummary {
+
+    private static final int STACK_LINES = 12;
+
+    private int passed;
+    private int failed;
+    private int skipped;
+    private final List<String> failures = new ArrayList<>();
+
+    public static void main(String[] args) throws Exception {
+        if (args.length != 1) {
+            System.err.println("usage: TestReportSummary REPORT_DIR");
+            System.exit(2);
+        }
+        TestReportSummary summary = new TestReportSummary();
+        summary.readAll(Path.of(args[0]));
+        summary.print();
+        System.exit(summary.failed > 0 || summary.passed + summary.failed == 0 ? 1 : 0);
+    }
+
+    private void readAll(Path reportDir) throws Exception {
+        DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
+        factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
+        factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+        try (DirectoryStream<Path> reports = Files.newDirectoryStream(reportDir, "TEST-*.xml")) {
+            for (Path report : reports) {
+                read(factory.newDocumentBuilder().parse(report.toFile()));
+            }
+        } catch (IOException e) {
+            System.err.println("cannot read test reports in " + reportDir + ": " + e.getMessage());
+        }
+    }
+
+    private void read(Document report) {
+        NodeList cases = report.getElementsByTagName("testcase");
+        for (int i = 0; i < cases.getLength(); i++) {
+            Element testCase = (Element) cases.item(i);
+            String name = testCase.getAttribute("classname") + " > " + testCase.getAttribute("name");
+            Element problem = firstChild(testCase, "failure");
+            if (problem == null) {
+                problem = firstChild(testCase, "error");
+            }
+            if (problem != null) {
+                failed++;
+                failures.add(describe(name, problem));
+            } else if (firstChild(testCase, "skipped") != null) {
+                skipped++;
+            } else {
+                passed++;
+            }
+        }
+    }
+
+    private static String describe(String name, Element problem) {
+        StringBuilder text = new StringBuilder("FAILED ").append(name).append('\n');
+        String message = problem.getAttribute("message");
+        if (!message.isEmpty()) {
+            text.append("    ").append(message.replace("\n", "\n    ")).append('\n');
+        }
+        // the exception line, then the frames in project code: that is where the reader needs to look
+        String[] stack = problem.getTextContent().strip().split("\n");
+        int shown = 0;
+        for (int i = 0; i < stack.length && shown < STACK_LINES; i++) {
+            String line = stack[i].strip();
+            boolean exceptionLine = i == 0 || line.startsWith("Caused by:");
+            if (exceptionLine && message.isEmpty() || line.startsWith("at robotworld.")) {
+                text.append("      ").append(line).append('\n');
+                shown++;
+            }
+        }
+        return text.toString();
+    }
+
+    private static Element firstChild(Element parent, String tag) {
+        NodeList list = parent.getElementsByTagName(tag);
+        return list.getLength() == 0 ? null : (Element) list.item(0);
+    }
+
+    private void print() {
+        failures.forEach(System.out::print);
+        if (passed + failed == 0) {
+            System.out.println("no test ran");
+        }
+        System.out.println("tests: " + passed + " passed, " + failed + " failed, " + skipped + " skipped");
+    }
+}
