@@ -1,0 +1,35 @@
+package robotworld.explorer.cli;
+
+import java.io.PrintWriter;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/**
+ * The {@code rwe} command line: one verb per job, each a picocli subcommand class in this package.
+ * Exit codes: 0 success, 1 the job failed (e.g. an invalid description), 2 wrong usage.
+ */
+@Command(name = "rwe", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        description = "RobotWorldExplorer: describe robots and environments, generate and run control frameworks.",
+        subcommands = {ValidateCommand.class, CommandLine.HelpCommand.class})
+public final class Rwe {
+
+    public static void main(String[] args) {
+        System.exit(run(args));
+    }
+
+    /** Runs the command line without exiting the JVM; returns the exit code. */
+    public static int run(String... args) {
+        return run(new PrintWriter(System.out, true), new PrintWriter(System.err, true), args);
+    }
+
+    /** Runs the command line with the given output and error writers; returns the exit code. */
+    public static int run(PrintWriter out, PrintWriter err, String... args) {
+        CommandLine commandLine = new CommandLine(new Rwe()).setOut(out).setErr(err);
+        // a failure inside a verb is reported as one line, never as a stack trace
+        commandLine.setExecutionExceptionHandler((exception, line, parseResult) -> {
+            line.getErr().println("rwe: " + exception.getMessage());
+            return 1;
+        });
+        return commandLine.execute(args);
+    }
+}
