@@ -1,0 +1,313 @@
+package robotworld.space.internal;
+
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.LinkedList;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Supplier;
+
+import robotworld.space.ContainerDestroyedException;
+import robotworld.space.ContainerInfo;
+import robotworld.space.ContainerNotFoundException;
+import robotworld.space.ContainerRef;
+import robotworld.space.ContainerSpec;
+import robotworld.space.Entry;
+import robotworld.space.Item;
+import robotworld.space.NotificationListener;
+import robotworld.space.NotificationMode;
+import robotworld.space.Operation;
+import robotworld.space.Selector;
+import robotworld.space.SpaceClosedException;
+import robotworld.space.SpaceException;
+import robotworld.space.SpaceInterruptedException;
+import robotworld.space.SpaceTimeoutException;
+import robotworld.space.Subscription;
+import robotworld.space.SubscriptionEnd;
+import robotworld.space.Timeout;
+
+/**
+ * One container: its entries, its lock, its blocked operations and its subscriptions. Every operation runs
+ * entirely under the container's own lock (there is no space-wide lock on the data path), which makes the
+ * operations on one container linearizable. Notifications are queued inside the same critical section, so
+ * their order is the operations' order.
+ */
+public final class ContainerEngine {
+
+    private final ContainerRef ref;
+    private final ContainerSpec spec;
+    private final ReentrantLock lock = new ReentrantLock();
+    private final EntryStore store;
+    private final NotificationHub hub;
+    private final Delivery delivery;
+    private final int queueCapacity;
+    /** Oldest first. */
+    private final LinkedList<Waiter> waiters = new LinkedList<>();
+    private long sequence;
+    /** Null while alive; otherwise how later callers fail. */
+    private Supplier<SpaceException> gone;
+
+    ContainerEngine(ContainerRef ref, ContainerSpec spec, Delivery delivery, int queueCapacity) {
+        this.ref = ref;
+        this.spec = spec;
+        this.store = new EntryStore(spec);
+        this.hub = new NotificationHub(ref);
+        this.delivery = delivery;
+        this.queueCapacity = queueCapacity;
+    }
+
+    public ContainerRef ref() {
+        return ref;
+    }
+
+    public ContainerSpec spec() {
+        return spec;
+    }
+
+    // ---- operations ----
+
+    /** read, take or destroy. */
+    public List<Entry> retrieve(Operation operation, Timeout timeout, Selector[] selectors) {
+        Validation.checkSelectors(spec, selectors);
+        boolean mutates = operation != Operation.READ;
+        @SuppressWarnings("unchecked")
+        List<Entry> result = (List<Entry>) execute(timeout, mutates, () -> tryRetrieve(operation, selectors));
+        return result;
+    }
+
+    public void write(Timeout timeout, List<Item> items) {
+        Validation.checkWrite(spec, items);
+        if (items.isEmpty()) {
+            return;
+        }
+        execute(timeout, true, () -> tryWrite(items));
+    }
+
+    public List<Entry> shift(List<Item> items) {
+        Validation.checkItems(spec, items);
+        if (items.isEmpty()) {
+            return List.of();
+        }
+        @SuppressWarnings("unchecked")
+        List<Entry> displaced = (List<Entry>) execute(Timeout.TRY_ONCE, true, () -> doShift(items));
+        return displaced;
+    }
+
+    private List<Entry> tryRetrieve(Operation operation, Selector[] selectors) {
+        List<Node> chosen = Selection.choose(store, spec.order(), selectors);
+        if (chosen == null) {
+            return null;
+        }
+        List<Entry> entries = entriesOf(chosen);
+        for (Node node : chosen) {
+            if (operation == Operation.READ) {
+                store.touch(node);
+            } else {
+                store.remove(node);
+            }
+        }
+        published(operation, entries, List.of());
+        return entries;
+    }
+
+    private Object tryWrite(List<Item> items) {
+        if (!Placement.fits(store, items)) {
+            return null;
+        }
+        List<Entry> written = Placement.insertAll(store, spec.vectorView(), items);
+        published(Operation.WRITE, written, List.of());
+        return Boolean.TRUE;
+    }
+
+    private List<Entry> doShift(List<Item> items) {
+        List<Entry> displaced = List.copyOf(Placement.shiftAll(store, spec.order(), spec.vectorView(), items));
+        List<Entry> shifted = new ArrayList<>(items.size());
+        for (Item item : items) {
+            shifted.add(item.entry());
+        }
+        published(Operation.SHIFT, List.copyOf(shifted), displaced);
+        return displaced;
+    }
+
+    private static List<Entry> entriesOf(List<Node> nodes) {
+        if (nodes.size() == 1) {
+            return List.of(nodes.get(0).entry);
+        }
+        Entry[] entries = new Entry[nodes.size()];
+        for (int i = 0; i < entries.length; i++) {
+            entries[i] = nodes.get(i).entry;
+        }
+        return List.of(entries);
+    }
+
+    /** Every completed operation gets the next sequence number; observers hear of those that touched entries. */
+    private void published(Operation operation, List<Entry> entries, List<Entry> displaced) {
+        long position = ++sequence;
+        if (!entries.isEmpty()) {
+            hub.publish(operation, entries, displaced, position);
+        }
+    }
+
+    // ---- blocking ----
+
+    private Object execute(Timeout timeout, boolean mutates, Waiter.Attempt attempt) {
+        lock.lock();
+        try {
+            failIfGone();
+            Object result = attempt.tryOnce();
+            if (result != null) {
+                if (mutates && !waiters.isEmpty()) {
+                    serveWaiters();
+                }
+                return result;
+            }
+            if (timeout.isTryOnce()) {
+                throw new SpaceTimeoutException("not possible at once on " + describe());
+            }
+            Waiter waiter = new Waiter(attempt, mutates, lock.newCondition());
+            waiters.addLast(waiter);
+            return await(waiter, timeout);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private Object await(Waiter waiter, Timeout timeout) {
+        long deadline = timeout.isInfinite() ? 0 : System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeout.millis());
+        while (!waiter.done) {
+            try {
+                if (timeout.isInfinite()) {
+                    waiter.wakeUp.await();
+                } else {
+                    long left = deadline - System.nanoTime();
+                    if (left <= 0) {
+                        waiters.remove(waiter);
+                        throw new SpaceTimeoutException("timed out after " + timeout + " on " + describe());
+                    }
+                    waiter.wakeUp.awaitNanos(left);
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                if (waiter.done) {
+                    break; // the operation already happened: hand over its result rather than lose it
+                }
+                waiters.remove(waiter);
+                throw new SpaceInterruptedException("interrupted while waiting on " + describe(), e);
+            }
+        }
+        if (waiter.failure != null) {
+            throw waiter.failure;
+        }
+        return waiter.result;
+    }
+
+    /**
+     * Retries blocked operations, oldest first. After one that changed the container succeeds, starts again
+     * from the oldest, since the change may have unblocked an operation that was skipped before.
+     */
+    private void serveWaiters() {
+        boolean changed = true;
+        while (changed && !waiters.isEmpty()) {
+            changed = false;
+            for (Iterator<Waiter> it = waiters.iterator(); it.hasNext(); ) {
+                Waiter waiter = it.next();
+                Object result;
+                try {
+                    result = waiter.attempt.tryOnce();
+                } catch (SpaceException e) {
+                    it.remove();
+                    waiter.fail(e);
+                    continue;
+                }
+                if (result != null) {
+                    it.remove();
+                    waiter.succeed(result);
+                    if (waiter.mutates) {
+                        changed = true;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+
+    // ---- notifications ----
+
+    public Subscription subscribe(Set<Operation> operations, NotificationMode mode, Timeout timeout,
+                                  NotificationListener listener) {
+        lock.lock();
+        try {
+            failIfGone();
+            QueuedSubscription subscription = new QueuedSubscription(ref, operations, mode, timeout, listener,
+                    queueCapacity, delivery, hub::remove);
+            hub.add(subscription);
+            subscription.start();
+            return subscription;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    // ---- lifecycle ----
+
+    /** Destroys the container: waiters fail, observers get DESTROY_CONTAINER (if asked) and their end. */
+    void destroy() {
+        lock.lock();
+        try {
+            if (gone != null) {
+                return;
+            }
+            gone = () -> new ContainerNotFoundException("container " + ref + " was destroyed");
+            failWaiters(() -> new ContainerDestroyedException("container " + ref + " was destroyed while waiting"));
+            hub.publish(Operation.DESTROY_CONTAINER, List.of(), List.of(), ++sequence);
+            hub.endAll(SubscriptionEnd.CONTAINER_DESTROYED);
+            store.clear();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Closes the container with its space: waiters fail, subscriptions end. */
+    void close() {
+        lock.lock();
+        try {
+            if (gone != null) {
+                return;
+            }
+            gone = () -> new SpaceClosedException("the space is closed");
+            failWaiters(gone);
+            hub.endAll(SubscriptionEnd.SPACE_CLOSED);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private void failWaiters(Supplier<? extends SpaceException> error) {
+        for (Waiter waiter : waiters) {
+            waiter.fail(error.get());
+        }
+        waiters.clear();
+    }
+
+    private void failIfGone() {
+        if (gone != null) {
+            throw gone.get();
+        }
+    }
+
+    public ContainerInfo info() {
+        lock.lock();
+        try {
+            failIfGone();
+            return new ContainerInfo(ref, spec, store.size(), waiters.size(), hub.count());
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private String describe() {
+        return spec.name() == null ? ref.toString() : "container '" + spec.name() + "' (" + ref + ")";
+    }
+}

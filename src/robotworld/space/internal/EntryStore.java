@@ -1,0 +1,172 @@
+package robotworld.space.internal;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import robotworld.space.ContainerSpec;
+import robotworld.space.Entry;
+import robotworld.space.Order;
+import robotworld.space.Uniqueness;
+
+/**
+ * The entries of one container and every index over them: insertion order, usage order, a random-access pool,
+ * and, when the spec asks for them, the KEY view, the VECTOR view and a value index for SET uniqueness. Not
+ * thread-safe: the owning {@link ContainerEngine} holds its lock around every call.
+ */
+final class EntryStore {
+
+    private final ContainerSpec spec;
+    private final NodeList byInsertion = NodeList.byInsertion();
+    private final NodeList byUsage = NodeList.byUsage();
+    private final RandomPool pool = new RandomPool();
+    private final Map<String, Node> keys;
+    private final VectorSlots vector;
+    private final Map<Entry, Node> values;
+    private long clock;
+
+    EntryStore(ContainerSpec spec) {
+        this.spec = spec;
+        this.keys = spec.keyView() ? new HashMap<>() : null;
+        this.vector = spec.vectorView() ? new VectorSlots() : null;
+        this.values = spec.uniqueness() == Uniqueness.SET ? new HashMap<>() : null;
+    }
+
+    int size() {
+        return pool.size();
+    }
+
+    /** Free places left; {@code Integer.MAX_VALUE} when unbounded. */
+    int room() {
+        return spec.isBounded() ? spec.capacity() - pool.size() : Integer.MAX_VALUE;
+    }
+
+    // ---- lookups ----
+
+    Node byKey(String key) {
+        return keys.get(key);
+    }
+
+    Node atPosition(int position) {
+        return vector.at(position);
+    }
+
+    /** Where an appended entry goes: one past the highest occupied position. */
+    int vectorEnd() {
+        return vector.end();
+    }
+
+    /** The stored entry equal to {@code entry} (SET containers only), or null. */
+    Node equalTo(Entry entry) {
+        return values.get(entry);
+    }
+
+    boolean isSet() {
+        return values != null;
+    }
+
+    /** The node {@code order} would choose next, or null when empty. */
+    Node first(Order order) {
+        return switch (order) {
+            case FIFO -> byInsertion.first();
+            case LIFO -> byInsertion.last();
+            case LRU -> byUsage.first();
+            case RANDOM -> pool.any();
+        };
+    }
+
+    /** The first {@code count} nodes in {@code order} ({@code count <= size}); all of them for a negative count. */
+    List<Node> first(Order order, int count) {
+        int wanted = count < 0 ? pool.size() : count;
+        if (order == Order.RANDOM) {
+            return pool.distinct(wanted);
+        }
+        List<Node> chosen = new ArrayList<>(wanted);
+        visitInOrder(order, node -> {
+            chosen.add(node);
+            return chosen.size() < wanted;
+        });
+        return chosen;
+    }
+
+    /** Visits nodes in {@code order} until the visitor says stop. */
+    void visitInOrder(Order order, NodeVisitor visitor) {
+        switch (order) {
+            case FIFO -> visitForward(byInsertion, visitor);
+            case LIFO -> {
+                for (Node node = byInsertion.last(); node != null; node = byInsertion.previous(node)) {
+                    if (!visitor.visit(node)) {
+                        return;
+                    }
+                }
+            }
+            case LRU -> visitForward(byUsage, visitor);
+            case RANDOM -> pool.visitFromRandomStart(visitor);
+        }
+    }
+
+    private static void visitForward(NodeList list, NodeVisitor visitor) {
+        for (Node node = list.first(); node != null; node = list.next(node)) {
+            if (!visitor.visit(node)) {
+                return;
+            }
+        }
+    }
+
+    // ---- changes ----
+
+    /** Stores an entry; the caller has checked that it fits. {@code position} is -1 without a VECTOR view. */
+    Node insert(Entry entry, String key, int position) {
+        Node node = new Node(entry, key, position, ++clock);
+        byInsertion.append(node);
+        byUsage.append(node);
+        pool.add(node);
+        if (key != null) {
+            keys.put(key, node);
+        }
+        if (position >= 0) {
+            vector.put(position, node);
+        }
+        if (values != null) {
+            values.put(entry, node);
+        }
+        return node;
+    }
+
+    void remove(Node node) {
+        byInsertion.unlink(node);
+        byUsage.unlink(node);
+        pool.remove(node);
+        if (node.key != null) {
+            keys.remove(node.key);
+        }
+        if (node.position >= 0) {
+            vector.clear(node.position);
+        }
+        if (values != null) {
+            values.remove(node.entry);
+        }
+    }
+
+    /** Marks a node as just used (LRU). */
+    void touch(Node node) {
+        node.used = ++clock;
+        byUsage.moveToEnd(node);
+    }
+
+    void clear() {
+        byInsertion.clear();
+        byUsage.clear();
+        pool.clear();
+        if (keys != null) {
+            keys.clear();
+        }
+        if (vector != null) {
+            vector.clear();
+        }
+        if (values != null) {
+            values.clear();
+        }
+    }
+}
