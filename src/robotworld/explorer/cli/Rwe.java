@@ -10,7 +10,8 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "rwe", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "RobotWorldExplorer: describe robots and environments, generate and run control frameworks.",
-        subcommands = {ValidateCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {ValidateCommand.class, SimulateCommand.class,
+                CommandLine.HelpCommand.class})
 public final class Rwe {
 
     public static void main(String[] args) {

@@ -1,0 +1,157 @@
+package robotworld.bus;
+
+import com.fazecast.jSerialComm.SerialPort;
+import java.io.IOException;
+import java.time.Duration;
+
+/**
+ * A {@link SerialLink} over a local serial device through jSerialComm. Also opens pseudo-terminals (e.g. the links
+ * of a {@code socat pty,rawer,link=A pty,rawer,link=B} pair), which is how tests exercise this path.
+ *
+ * <p>Modem lines (DTR, RTS, CTS, RI) are neither used nor required: ptys have none and a CM11A needs none.
+ */
+public final class JSerialCommLink implements SerialLink {
+
+    private static final int WRITE_TIMEOUT_MS = 2_000;
+
+    private final String path;
+    private final SerialSettings settings;
+    private SerialPort port;
+    private volatile boolean open;
+    private int currentReadTimeoutMs = -1;
+
+    /** A link to {@code path}, not yet opened. */
+    public JSerialCommLink(String path, SerialSettings settings) {
+        this.path = path;
+        this.settings = settings;
+    }
+
+    @Override
+    public String portName() {
+        return path;
+    }
+
+    @Override
+    public synchronized void open() throws IOException {
+        if (open) {
+            return;
+        }
+        SerialPort candidate;
+        try {
+            // resolves the path now: a pty link must already exist
+            candidate = SerialPort.getCommPort(path);
+        } catch (RuntimeException e) {
+            throw new IOException(path + ": no such serial port (" + e.getMessage() + ")", e);
+        }
+        candidate.setComPortParameters(settings.baudRate(), settings.dataBits(), stopBits(), parity());
+        candidate.setFlowControl(SerialPort.FLOW_CONTROL_DISABLED);
+        candidate.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING | SerialPort.TIMEOUT_WRITE_BLOCKING,
+                1, WRITE_TIMEOUT_MS);
+        if (!candidate.openPort()) {
+            throw new IOException(path + ": cannot open serial port (error " + candidate.getLastErrorCode()
+                    + " at " + candidate.getLastErrorLocation() + ")");
+        }
+        port = candidate;
+        currentReadTimeoutMs = 1;
+        open = true;
+    }
+
+    @Override
+    public boolean isOpen() {
+        return open;
+    }
+
+    @Override
+    public void write(byte[] bytes) throws IOException {
+        SerialPort p = requireOpen();
+        int written = 0;
+        while (written < bytes.length) {
+            int n = p.writeBytes(bytes, bytes.length - written, written);
+            if (n < 0) {
+                throw new LinkClosedException(path, "write failed: the device is gone");
+            }
+            if (n == 0) {
+                throw new IOException(path + ": write timed out after " + WRITE_TIMEOUT_MS + " ms");
+            }
+            written += n;
+        }
+    }
+
+    @Override
+    public int read(byte[] buffer, int offset, int length, Duration timeout) throws IOException {
+        SerialPort p = requireOpen();
+        long millis = Math.max(0, Math.min(Integer.MAX_VALUE, timeout.toMillis()));
+        if (millis == 0) {
+            // jSerialComm reads "0 ms semi-blocking" as "wait forever": look instead
+            int ready = available();
+            if (ready == 0) {
+                return 0;
+            }
+            length = Math.min(length, ready);
+        } else {
+            setReadTimeout((int) millis);
+        }
+        int n = p.readBytes(buffer, length, offset);
+        if (n < 0) {
+            throw new LinkClosedException(path, open ? "the device is gone" : "the link was closed");
+        }
+        return n;
+    }
+
+    @Override
+    public int available() throws IOException {
+        int n = requireOpen().bytesAvailable();
+        if (n < 0) {
+            throw new LinkClosedException(path, "the device is gone");
+        }
+        return n;
+    }
+
+    @Override
+    public synchronized void close() {
+        if (!open) {
+            return;
+        }
+        open = false;
+        port.closePort();
+    }
+
+    private void setReadTimeout(int millis) {
+        // only touch the port when the timeout changes: each change is a system call
+        if (millis != currentReadTimeoutMs) {
+            port.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING | SerialPort.TIMEOUT_WRITE_BLOCKING,
+                    millis, WRITE_TIMEOUT_MS);
+            currentReadTimeoutMs = millis;
+        }
+    }
+
+    private SerialPort requireOpen() throws IOException {
+        if (!open) {
+            throw new LinkClosedException(path, "the link is not open");
+        }
+        return port;
+    }
+
+    private int parity() {
+        return switch (settings.parity()) {
+            case NONE -> SerialPort.NO_PARITY;
+            case ODD -> SerialPort.ODD_PARITY;
+            case EVEN -> SerialPort.EVEN_PARITY;
+            case MARK -> SerialPort.MARK_PARITY;
+            case SPACE -> SerialPort.SPACE_PARITY;
+        };
+    }
+
+    private int stopBits() {
+        return switch (settings.stopBits()) {
+            case ONE -> SerialPort.ONE_STOP_BIT;
+            case ONE_POINT_FIVE -> SerialPort.ONE_POINT_FIVE_STOP_BITS;
+            case TWO -> SerialPort.TWO_STOP_BITS;
+        };
+    }
+
+    @Override
+    public String toString() {
+        return "serial " + path + " (" + settings + ")";
+    }
+}

@@ -1,0 +1,239 @@
+package robotworld.x10;
+
+import java.io.IOException;
+import java.time.Duration;
+import java.time.LocalDateTime;
+import java.util.List;
+import java.util.function.Consumer;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robotworld.bus.SerialLink;
+
+/**
+ * The host side of the CM11A serial protocol over one link. Not thread-safe: exactly one thread (the controller's
+ * link worker) calls it, which is what keeps one frame on the wire at a time.
+ *
+ * <p>A transmission is: send frame, read the checksum echo (resend on a wrong or missing one, bounded), send
+ * 0x00, wait for 0x55. The interface may poll (0x5A: upload waiting; 0xA5: power failure, clock wanted) where a
+ * checksum or 0x55 was expected; the poll is answered and the frame sent again, because a polling interface has
+ * ignored it. When a frame's checksum itself is 0x5A or 0xA5 the echo is taken as the checksum; if it was a poll
+ * after all, the interface polls again instead of sending 0x55, which is then handled as above.
+ */
+final class CM11aProtocol {
+
+    private static final Logger LOG = LoggerFactory.getLogger(CM11aProtocol.class);
+
+    private final SerialLink link;
+    private final CM11aConfig config;
+    private final Consumer<List<X10Event>> eventSink;
+    private final UploadDecoder decoder = new UploadDecoder();
+    private int pollsThisCommand;
+
+    CM11aProtocol(SerialLink link, CM11aConfig config, Consumer<List<X10Event>> eventSink) {
+        this.link = link;
+        this.config = config;
+        this.eventSink = eventSink;
+    }
+
+    String portName() {
+        return link.portName();
+    }
+
+    /** Sends the frames in order, each as one complete exchange. */
+    void transmit(List<X10Frame> frames) throws IOException {
+        pollsThisCommand = 0;
+        serviceIdle();
+        for (X10Frame frame : frames) {
+            transmit(frame);
+        }
+    }
+
+    private void transmit(X10Frame frame) throws IOException {
+        byte[] bytes = frame.bytes();
+        int expected = frame.checksum();
+        int failedAttempts = 0;
+        while (true) {
+            pauseBetweenFrames();
+            link.write(bytes);
+            int reply = link.readByte(config.checksumTimeout());
+            if (reply != expected) {
+                if (reply == X10Constants.CM11A_POLL || reply == X10Constants.CM11A_POWER_FAIL_POLL) {
+                    answerPoll(reply, frame);
+                    continue;
+                }
+                failedAttempts++;
+                if (failedAttempts >= config.maxAttempts()) {
+                    throw reply < 0
+                            ? new X10TimeoutException(portName(), "no checksum for frame " + frame + " within "
+                                    + config.checksumTimeout().toMillis() + " ms, " + failedAttempts + " attempts")
+                            : new X10ProtocolException(portName(), "wrong checksum " + Hex.of(reply)
+                                    + " (expected " + Hex.of(expected) + ") for frame " + frame + ", "
+                                    + failedAttempts + " attempts");
+                }
+                LOG.debug("{}: {} for {}, resending", portName(),
+                        reply < 0 ? "no checksum" : "checksum " + Hex.of(reply), frame);
+                continue;
+            }
+            link.write(X10Constants.CM11A_ACK);
+            int ready = awaitReady(frame);
+            if (ready == X10Constants.CM11A_READY) {
+                return;
+            }
+            answerPoll(ready, frame); // the interface polled instead of transmitting: send the frame again
+        }
+    }
+
+    /** Waits for 0x55; returns it, or a poll byte that came instead. */
+    private int awaitReady(X10Frame frame) throws IOException {
+        long deadline = System.nanoTime() + config.readyTimeout().toNanos();
+        while (true) {
+            long left = deadline - System.nanoTime();
+            int reply = left <= 0 ? -1 : link.readByte(Duration.ofNanos(left));
+            if (reply == X10Constants.CM11A_READY || X10Constants.looksLikePoll(reply)) {
+                return reply;
+            }
+            if (reply < 0) {
+                throw new X10TimeoutException(portName(), "no ready byte 0x55 after frame " + frame + " within "
+                        + config.readyTimeout().toMillis() + " ms");
+            }
+            LOG.debug("{}: ignored byte {} while waiting for 0x55", portName(), Hex.of(reply));
+        }
+    }
+
+    private void answerPoll(int poll, X10Frame during) throws IOException {
+        pollsThisCommand++;
+        if (pollsThisCommand > config.maxPollsPerCommand()) {
+            throw new X10ProtocolException(portName(), "the interface kept polling (" + pollsThisCommand
+                    + " polls) while sending " + (during == null ? "a request" : "frame " + during));
+        }
+        if (poll == X10Constants.CM11A_POLL) {
+            answerUploadPoll();
+        } else {
+            answerPowerFailPoll();
+        }
+    }
+
+    /** Handles polls and stray bytes that arrived while no command was running. */
+    void serviceIdle() throws IOException {
+        while (link.available() > 0) {
+            int value = link.readByte(Duration.ZERO);
+            if (value == X10Constants.CM11A_POLL) {
+                answerUploadPoll();
+            } else if (value == X10Constants.CM11A_POWER_FAIL_POLL) {
+                answerPowerFailPoll();
+            } else if (value >= 0) {
+                LOG.debug("{}: ignored stray byte {}", portName(), Hex.of(value));
+            }
+        }
+    }
+
+    /** 0x5A: answer 0xC3, read {@code size mask data...}, decode, hand the events on. */
+    private void answerUploadPoll() throws IOException {
+        link.write(X10Constants.CM11A_POLL_ACK);
+        int size = link.readByte(config.checksumTimeout());
+        for (int skipped = 0; size == X10Constants.CM11A_POLL && skipped < config.maxAttempts(); skipped++) {
+            size = link.readByte(config.checksumTimeout()); // polls sent before our 0xC3 arrived
+        }
+        if (size == X10Constants.CM11A_POWER_FAIL_POLL) {
+            answerPowerFailPoll();
+            return;
+        }
+        if (size < 1 || size > X10Constants.CM11A_MAX_UPLOAD_SIZE) {
+            LOG.warn("{}: bad upload size {} after 0xC3: upload lost", portName(),
+                    size < 0 ? "(none)" : Hex.of(size));
+            return;
+        }
+        byte[] buffer = new byte[size];
+        if (!readFully(buffer)) {
+            LOG.warn("{}: upload cut short after 0xC3: lost", portName());
+            return;
+        }
+        LOG.debug("{}: upload {} {}", portName(), Hex.of(size), Hex.of(buffer));
+        List<X10Event> events = decoder.decode(buffer);
+        if (!events.isEmpty()) {
+            eventSink.accept(events);
+        }
+    }
+
+    /** 0xA5: send the clock until the interface takes it. */
+    private void answerPowerFailPoll() throws IOException {
+        LOG.info("{}: interface reports a power failure; sending the clock", portName());
+        sendClock();
+    }
+
+    /** Sends 0x9B and the clock; the checksum covers the six clock bytes only. */
+    void sendClock() throws IOException {
+        for (int attempt = 1; attempt <= config.maxAttempts(); attempt++) {
+            CM11aClock clock = CM11aClock.of(LocalDateTime.now(config.clock()), config.monitoredHouse());
+            int expected = clock.checksum();
+            pauseBetweenFrames();
+            link.write(clock.frame());
+            int reply = link.readByte(config.checksumTimeout());
+            for (int skipped = 0; reply == X10Constants.CM11A_POWER_FAIL_POLL && expected != reply
+                    && skipped < config.maxAttempts(); skipped++) {
+                reply = link.readByte(config.checksumTimeout()); // polls sent before our clock arrived
+            }
+            if (reply != expected) {
+                LOG.debug("{}: clock checksum {} (expected {})", portName(),
+                        reply < 0 ? "missing" : Hex.of(reply), Hex.of(expected));
+                continue;
+            }
+            link.write(X10Constants.CM11A_ACK);
+            int ready = link.readByte(config.readyTimeout());
+            if (ready == X10Constants.CM11A_READY) {
+                return;
+            }
+            LOG.debug("{}: {} instead of 0x55 after the clock", portName(), ready < 0 ? "nothing" : Hex.of(ready));
+        }
+        throw new X10ProtocolException(portName(), "the interface did not accept the clock after "
+                + config.maxAttempts() + " attempts");
+    }
+
+    /** 0x8B: read the 14 status bytes. */
+    CM11aStatus requestStatus() throws IOException {
+        pollsThisCommand = 0;
+        serviceIdle();
+        for (int attempt = 1; attempt <= config.maxAttempts(); attempt++) {
+            pauseBetweenFrames();
+            link.write(X10Constants.CM11A_STATUS_REQUEST);
+            byte[] status = new byte[X10Constants.CM11A_STATUS_LENGTH];
+            if (readFully(status)) {
+                return CM11aStatus.decode(status);
+            }
+            LOG.debug("{}: status answer incomplete, asking again", portName());
+            drain();
+        }
+        throw new X10TimeoutException(portName(), "no complete status answer within "
+                + config.checksumTimeout().toMillis() + " ms, " + config.maxAttempts() + " attempts");
+    }
+
+    /** Reads exactly buffer.length bytes, allowing checksumTimeout between bytes; false when they do not come. */
+    private boolean readFully(byte[] buffer) throws IOException {
+        int filled = 0;
+        while (filled < buffer.length) {
+            int n = link.read(buffer, filled, buffer.length - filled, config.checksumTimeout());
+            if (n == 0) {
+                return false;
+            }
+            filled += n;
+        }
+        return true;
+    }
+
+    private void drain() throws IOException {
+        byte[] junk = new byte[64];
+        while (link.read(junk, 0, junk.length, Duration.ofMillis(20)) > 0) {
+            // discard what is left of a broken answer
+        }
+    }
+
+    private void pauseBetweenFrames() {
+        if (!config.interFrameGap().isZero()) {
+            try {
+                Thread.sleep(config.interFrameGap().toMillis());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+}
