@@ -3,6 +3,7 @@ package robotworld.bus;
 import com.fazecast.jSerialComm.SerialPort;
 import java.io.IOException;
 import java.time.Duration;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * A {@link SerialLink} over a local serial device through jSerialComm. Also opens pseudo-terminals (e.g. the links
@@ -13,6 +14,9 @@ import java.time.Duration;
 public final class JSerialCommLink implements SerialLink {
 
     private static final int WRITE_TIMEOUT_MS = 2_000;
+    /** Read timeouts below this are waited out by polling: jSerialComm's own are 100 ms coarse on Linux. */
+    private static final long COARSE_TIMEOUT_MS = 100;
+    private static final long POLL_PAUSE_NANOS = 200_000;
 
     private final String path;
     private final SerialSettings settings;
@@ -88,6 +92,13 @@ public final class JSerialCommLink implements SerialLink {
                 return 0;
             }
             length = Math.min(length, ready);
+        } else if (millis < COARSE_TIMEOUT_MS) {
+            // on Linux the read timeout is VTIME, in tenths of a second: a 10 ms wait would take 100 ms
+            int ready = awaitAvailable(millis);
+            if (ready == 0) {
+                return 0;
+            }
+            length = Math.min(length, ready);
         } else {
             setReadTimeout((int) millis);
         }
@@ -96,6 +107,19 @@ public final class JSerialCommLink implements SerialLink {
             throw new LinkClosedException(path, open ? "the device is gone" : "the link was closed");
         }
         return n;
+    }
+
+    /** Polls for data for up to {@code millis}; returns how many bytes are ready (0 when none came). */
+    private int awaitAvailable(long millis) throws IOException {
+        long deadline = System.nanoTime() + millis * 1_000_000;
+        while (true) {
+            int ready = available();
+            long left = deadline - System.nanoTime();
+            if (ready > 0 || left <= 0) {
+                return ready;
+            }
+            LockSupport.parkNanos(Math.min(left, POLL_PAUSE_NANOS));
+        }
     }
 
     @Override

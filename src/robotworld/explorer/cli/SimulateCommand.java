@@ -15,7 +15,7 @@ import robotworld.sim.Cm11aTiming;
 /** {@code rwe simulate DEVICE ...}: runs a simulated device until stopped with Ctrl-C. */
 @Command(name = "simulate", mixinStandardHelpOptions = true,
         description = "Run a simulated device that real drivers can talk to; stop it with Ctrl-C.",
-        subcommands = {SimulateCommand.Cm11a.class})
+        subcommands = {SimulateCommand.Cm11a.class, SimulateRobotCommand.class})
 public final class SimulateCommand implements Runnable {
 
     @Spec

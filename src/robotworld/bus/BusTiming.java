@@ -1,0 +1,72 @@
+package robotworld.bus;
+
+import java.time.Duration;
+
+/**
+ * How patient the bus master is. All reply timeouts count from the moment the request has left the wire (its
+ * wire time at the baud rate is added automatically).
+ *
+ * @param responseTimeout how long a module may take to start its reply in normal calls
+ * @param attempts how often a call is sent in all (1 = no retry); timeouts, CRC errors and malformed replies
+ *        are retried, exception responses are not
+ * @param interByteTimeout the longest pause inside one reply; longer means the reply was cut short
+ * @param scanAllowance in bus exploration, how long an address may take to start answering beyond the 3.5
+ *        character silence; an absent address costs this much, so it is short (see {@code docs/bus.md})
+ * @param frameGap silence kept before each request (Modbus asks for 3.5 characters; {@link Duration#ZERO} for
+ *        links without a real line, e.g. a simulator in fast timing)
+ * @param servoMoveTimeout how long {@code setServo} waits for a servo to report it reached its target
+ */
+public record BusTiming(Duration responseTimeout, int attempts, Duration interByteTimeout, Duration scanAllowance,
+        Duration frameGap, Duration servoMoveTimeout) {
+
+    /** The 3.5-character silence of the baud rate; resolved by the bus. */
+    public static final Duration AUTO_FRAME_GAP = Duration.ofNanos(-1);
+
+    public BusTiming {
+        positive(responseTimeout, "response timeout");
+        positive(interByteTimeout, "inter-byte timeout");
+        positive(scanAllowance, "scan allowance");
+        positive(servoMoveTimeout, "servo move timeout");
+        if (attempts < 1 || attempts > 10) {
+            throw new IllegalArgumentException("attempts must be 1..10, was " + attempts);
+        }
+        if (frameGap == null || (frameGap.isNegative() && !frameGap.equals(AUTO_FRAME_GAP))) {
+            throw new IllegalArgumentException("frame gap must be zero, positive or AUTO_FRAME_GAP");
+        }
+    }
+
+    /**
+     * Defaults for real modules: 100 ms to start a reply, 3 attempts, 20 ms inside a reply, 8 ms scan allowance,
+     * the 3.5-character frame gap, 5 s for a servo move.
+     */
+    public static BusTiming defaults() {
+        return new BusTiming(Duration.ofMillis(100), 3, Duration.ofMillis(20), Duration.ofMillis(8), AUTO_FRAME_GAP,
+                Duration.ofSeconds(5));
+    }
+
+    public BusTiming withResponseTimeout(Duration timeout) {
+        return new BusTiming(timeout, attempts, interByteTimeout, scanAllowance, frameGap, servoMoveTimeout);
+    }
+
+    public BusTiming withAttempts(int count) {
+        return new BusTiming(responseTimeout, count, interByteTimeout, scanAllowance, frameGap, servoMoveTimeout);
+    }
+
+    public BusTiming withScanAllowance(Duration allowance) {
+        return new BusTiming(responseTimeout, attempts, interByteTimeout, allowance, frameGap, servoMoveTimeout);
+    }
+
+    public BusTiming withFrameGap(Duration gap) {
+        return new BusTiming(responseTimeout, attempts, interByteTimeout, scanAllowance, gap, servoMoveTimeout);
+    }
+
+    public BusTiming withServoMoveTimeout(Duration timeout) {
+        return new BusTiming(responseTimeout, attempts, interByteTimeout, scanAllowance, frameGap, timeout);
+    }
+
+    private static void positive(Duration duration, String what) {
+        if (duration == null || duration.isNegative() || duration.isZero()) {
+            throw new IllegalArgumentException(what + " must be positive, was " + duration);
+        }
+    }
+}

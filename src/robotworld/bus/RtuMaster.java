@@ -1,0 +1,334 @@
+package robotworld.bus;
+
+import java.io.IOException;
+import java.time.Duration;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
+import java.util.function.Consumer;
+import java.util.function.IntFunction;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robotworld.bus.modbus.Crc16;
+import robotworld.bus.modbus.ExceptionCodes;
+import robotworld.bus.modbus.FrameLength;
+import robotworld.bus.modbus.FrameLengths;
+import robotworld.bus.modbus.FunctionCodes;
+import robotworld.bus.modbus.RtuFrame;
+import robotworld.bus.modbus.RtuTiming;
+
+/**
+ * The client (master) end of Modbus RTU over a {@link SerialLink}: one transaction at a time, replies found by
+ * their computed length (silences do not survive TCP or ptys), corrupted replies retried, late replies from other
+ * addresses recognised as stray frames instead of being mistaken for the awaited one.
+ */
+final class RtuMaster {
+
+    private static final Logger LOG = LoggerFactory.getLogger(RtuMaster.class);
+
+    /** Upper bound for skipping a stream of garbage after a corrupted reply. */
+    private static final long MAX_RESYNC_NANOS = 500_000_000L;
+
+    /**
+     * How one call is made.
+     *
+     * @param replyTimeout how long the reply may take to start, counted from the end of the request on the wire
+     * @param attempts how often the request is sent in all
+     * @param retryTimeouts whether a missing reply is retried (not in a scan, where silence means "absent")
+     */
+    record CallPolicy(Duration replyTimeout, int attempts, boolean retryTimeouts) {
+    }
+
+    private enum Kind { OK, TIMEOUT, CORRUPT, WRONG_FUNCTION }
+
+    private record Reply(Kind kind, byte[] pdu) {
+        static final Reply TIMEOUT = new Reply(Kind.TIMEOUT, null);
+        static final Reply CORRUPT = new Reply(Kind.CORRUPT, null);
+    }
+
+    private record Pending(int address, byte[] pdu, long deadline) {
+    }
+
+    private final SerialLink link;
+    private final RtuTiming timing;
+    private final long frameGapNanos;
+    private final long interByteNanos;
+    private final IntFunction<String> describe;
+    private final byte[] buffer = new byte[2 * RtuFrame.MAX_LENGTH];
+    private final AtomicLong transactions = new AtomicLong();
+    private final AtomicLong retries = new AtomicLong();
+    private final AtomicLong timeouts = new AtomicLong();
+    private final AtomicLong crcErrors = new AtomicLong();
+    private final AtomicLong exceptionResponses = new AtomicLong();
+    private final AtomicLong strayFrames = new AtomicLong();
+    private volatile Consumer<RtuFrame> strayListener = frame -> { };
+    private long lineQuietSince = System.nanoTime();
+    private Pending pending;
+    private boolean linkBroken;
+
+    /**
+     * @param describe names an address for messages, e.g. "BumperModule 'Bumper-Sensor' at address 2"
+     */
+    RtuMaster(SerialLink link, RtuTiming timing, BusTiming busTiming, IntFunction<String> describe) {
+        this.link = link;
+        this.timing = timing;
+        this.frameGapNanos = busTiming.frameGap().equals(BusTiming.AUTO_FRAME_GAP) ? timing.t35Nanos()
+                : busTiming.frameGap().toNanos();
+        this.interByteNanos = busTiming.interByteTimeout().toNanos();
+        this.describe = describe;
+    }
+
+    RtuTiming timing() {
+        return timing;
+    }
+
+    /** Who hears about valid frames from addresses nobody asked at that moment. */
+    void onStrayFrame(Consumer<RtuFrame> listener) {
+        this.strayListener = listener == null ? frame -> { } : listener;
+    }
+
+    /**
+     * Sends a request and returns the response PDU.
+     *
+     * @throws BusTimeoutException no reply in any attempt
+     * @throws BusCrcException only corrupted replies
+     * @throws BusProtocolException replies that do not fit the request
+     * @throws ModuleRefusedException an exception response
+     * @throws BusException the link failed
+     */
+    synchronized byte[] call(int address, byte[] pdu, CallPolicy policy) {
+        settlePending();
+        byte[] frame = new RtuFrame(address, pdu).encode();
+        FrameLength length = FrameLengths.responseTo(pdu);
+        Reply last = null;
+        for (int attempt = 1; attempt <= policy.attempts(); attempt++) {
+            if (attempt > 1) {
+                retries.incrementAndGet();
+            }
+            long deadline = send(address, frame) + policy.replyTimeout().toNanos();
+            Reply reply = readReply(address, pdu, length, deadline);
+            if (reply.kind() == Kind.OK) {
+                return reply.pdu();
+            }
+            last = reply;
+            if (reply.kind() == Kind.TIMEOUT) {
+                timeouts.incrementAndGet();
+                if (!policy.retryTimeouts()) {
+                    throw failure(address, pdu, reply, attempt, policy);
+                }
+            }
+        }
+        throw failure(address, pdu, last, policy.attempts(), policy);
+    }
+
+    /**
+     * Sends a request and returns at once. Its reply is read (and checked, failures logged) before the next
+     * request, because on a half-duplex bus nobody may talk while a module answers.
+     */
+    synchronized void callQuietly(int address, byte[] pdu, Duration replyTimeout) {
+        settlePending();
+        long deadline = send(address, new RtuFrame(address, pdu).encode()) + replyTimeout.toNanos();
+        pending = new Pending(address, pdu, deadline);
+    }
+
+    /**
+     * Listens for {@code window} and reports every valid frame to the stray listener: how bus exploration hears
+     * late replies to its last requests.
+     */
+    synchronized void listenForStrays(Duration window, byte[] lastRequestPdu) {
+        settlePending();
+        readReply(-1, lastRequestPdu, FrameLengths.responseTo(lastRequestPdu), System.nanoTime() + window.toNanos());
+    }
+
+    BusStatistics statistics() {
+        return new BusStatistics(transactions.get(), retries.get(), timeouts.get(), crcErrors.get(),
+                exceptionResponses.get(), strayFrames.get());
+    }
+
+    /** Writes a frame after the line has been quiet for the frame gap; returns when it has left the wire. */
+    private long send(int address, byte[] frame) {
+        try {
+            reopenIfBroken();
+            drainStale();
+            sleepUntil(lineQuietSince + frameGapNanos);
+            link.write(frame);
+            transactions.incrementAndGet();
+            // the bytes are on their way: the line is busy until they have left at the baud rate
+            lineQuietSince = System.nanoTime() + timing.wireNanos(frame.length);
+            return lineQuietSince;
+        } catch (IOException e) {
+            throw linkFailure(address, e);
+        }
+    }
+
+    private Reply readReply(int address, byte[] request, FrameLength length, long deadline) {
+        int have = 0;
+        try {
+            while (true) {
+                long wait = have == 0 ? deadline - System.nanoTime() : interByteNanos;
+                if (wait <= 0) {
+                    return Reply.TIMEOUT;
+                }
+                int n = link.read(buffer, have, buffer.length - have, millisAtLeastOne(wait));
+                if (n > 0) {
+                    have += n;
+                    lineQuietSince = System.nanoTime();
+                }
+                if (have == 0) {
+                    continue;
+                }
+                int expected = length.of(buffer, have);
+                int frameLength;
+                if (expected > 0 && have >= expected) {
+                    frameLength = expected;
+                } else if (n == 0 && expected == FrameLength.UNKNOWN) {
+                    frameLength = have; // silence ends a frame we cannot measure
+                } else if (n == 0 || expected > RtuFrame.MAX_LENGTH || have >= buffer.length) {
+                    return corrupt(address, have, "cut short or oversized");
+                } else {
+                    continue;
+                }
+                if (!Crc16.isValidFrame(buffer, frameLength)) {
+                    return corrupt(address, frameLength, "CRC error");
+                }
+                RtuFrame frame = RtuFrame.decode(buffer, frameLength);
+                have -= frameLength;
+                System.arraycopy(buffer, frameLength, buffer, 0, have);
+                if (frame.address() != address) {
+                    stray(frame);
+                    continue;
+                }
+                if (have > 0) {
+                    skipUntilSilence(); // noise behind our reply
+                }
+                return classify(address, request, frame.pdu());
+            }
+        } catch (IOException e) {
+            throw linkFailure(address, e);
+        }
+    }
+
+    private Reply classify(int address, byte[] request, byte[] response) {
+        int requested = request[0] & 0xFF;
+        int answered = response[0] & 0xFF;
+        if (answered == requested) {
+            return new Reply(Kind.OK, response);
+        }
+        if (answered == (requested | FunctionCodes.EXCEPTION_BIT) && response.length == 2) {
+            exceptionResponses.incrementAndGet();
+            int code = response[1] & 0xFF;
+            throw new ModuleRefusedException(link.portName(), address, describe.apply(address) + " on "
+                    + link.portName() + " refused " + FunctionCodes.name(requested) + " with Modbus exception "
+                    + code + " (" + ExceptionCodes.name(code) + ")", requested, code);
+        }
+        return new Reply(Kind.WRONG_FUNCTION, response);
+    }
+
+    private Reply corrupt(int address, int length, String what) throws IOException {
+        crcErrors.incrementAndGet();
+        LOG.debug("{}: corrupted reply ({}): {}", describe.apply(address), what, RtuFrame.hex(buffer, length));
+        skipUntilSilence();
+        return Reply.CORRUPT;
+    }
+
+    private void settlePending() {
+        if (pending == null) {
+            return;
+        }
+        Pending quiet = pending;
+        pending = null;
+        try {
+            Reply reply = readReply(quiet.address(), quiet.pdu(), FrameLengths.responseTo(quiet.pdu()),
+                    quiet.deadline());
+            if (reply.kind() == Kind.TIMEOUT) {
+                timeouts.incrementAndGet();
+            }
+            if (reply.kind() != Kind.OK) {
+                LOG.warn("{} on {}: quiet {} got no valid reply ({})", describe.apply(quiet.address()),
+                        link.portName(), FunctionCodes.name(quiet.pdu()[0]), reply.kind());
+            }
+        } catch (ModuleRefusedException e) {
+            LOG.warn("quiet call: {}", e.getMessage());
+        }
+    }
+
+    /** Bytes waiting before a request belong to nobody's reply any more: report valid frames, drop the rest. */
+    private void drainStale() throws IOException {
+        int have = 0;
+        while (link.available() > 0 && have < buffer.length) {
+            int n = link.read(buffer, have, buffer.length - have, Duration.ZERO);
+            if (n <= 0) {
+                break;
+            }
+            have += n;
+        }
+        if (have == 0) {
+            return;
+        }
+        if (Crc16.isValidFrame(buffer, have)) {
+            stray(RtuFrame.decode(buffer, have));
+        } else {
+            LOG.debug("dropped {} stale bytes on {}: {}", have, link.portName(), RtuFrame.hex(buffer, have));
+        }
+        lineQuietSince = System.nanoTime();
+    }
+
+    private void skipUntilSilence() throws IOException {
+        byte[] scratch = new byte[RtuFrame.MAX_LENGTH];
+        long giveUp = System.nanoTime() + MAX_RESYNC_NANOS;
+        while (System.nanoTime() < giveUp
+                && link.read(scratch, 0, scratch.length, millisAtLeastOne(interByteNanos)) > 0) {
+            lineQuietSince = System.nanoTime();
+        }
+    }
+
+    private void stray(RtuFrame frame) {
+        strayFrames.incrementAndGet();
+        LOG.debug("stray frame on {}: {}", link.portName(), frame);
+        strayListener.accept(frame);
+    }
+
+    private void reopenIfBroken() throws IOException {
+        if (linkBroken) {
+            link.close();
+            link.open();
+            linkBroken = false;
+        }
+    }
+
+    private BusException failure(int address, byte[] request, Reply last, int attempts, CallPolicy policy) {
+        String who = describe.apply(address) + " on " + link.portName();
+        String function = FunctionCodes.name(request[0]);
+        String tries = attempts == 1 ? "1 attempt" : attempts + " attempts";
+        return switch (last.kind()) {
+            case TIMEOUT -> new BusTimeoutException(link.portName(), address, who + ": no reply to " + function
+                    + " within " + millis(policy.replyTimeout()) + " (" + tries + ")");
+            case CORRUPT -> new BusCrcException(link.portName(), address, who + ": corrupted reply (CRC error) to "
+                    + function + " (" + tries + ")");
+            default -> new BusProtocolException(link.portName(), address, who + ": unexpected reply to " + function
+                    + ": " + RtuFrame.hex(last.pdu(), last.pdu().length) + " (" + tries + ")");
+        };
+    }
+
+    private BusException linkFailure(int address, IOException e) {
+        linkBroken = true;
+        return new BusException(link.portName(), address, describe.apply(address) + " on " + link.portName()
+                + ": the link failed: " + e.getMessage(), e);
+    }
+
+    private static String millis(Duration duration) {
+        return duration.toNanos() % 1_000_000 == 0 ? duration.toMillis() + " ms"
+                : String.format("%.1f ms", duration.toNanos() / 1e6);
+    }
+
+    /** Link reads wait in whole milliseconds, and 0 would mean "do not wait": round up. */
+    private static Duration millisAtLeastOne(long nanos) {
+        return Duration.ofMillis(Math.max(1, (nanos + 999_999) / 1_000_000));
+    }
+
+    private static void sleepUntil(long nanoTime) {
+        long left;
+        while ((left = nanoTime - System.nanoTime()) > 0) {
+            LockSupport.parkNanos(left);
+        }
+    }
+}

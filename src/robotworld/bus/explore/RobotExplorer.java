@@ -1,0 +1,269 @@
+package robotworld.bus.explore;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.regex.Pattern;
+import robotworld.bus.BusCrcException;
+import robotworld.bus.BusException;
+import robotworld.bus.BusProtocolException;
+import robotworld.bus.BusTimeoutException;
+import robotworld.bus.ModuleRefusedException;
+import robotworld.bus.RS485Bus;
+import robotworld.bus.modbus.DeviceIdentification;
+import robotworld.bus.modbus.ServerIdReport;
+import robotworld.description.BusModuleClassType;
+import robotworld.description.DescriptionException;
+import robotworld.description.ModuleDescriptionType;
+import robotworld.description.RobotDescriptionDocument;
+
+/**
+ * Bus exploration: scans addresses, identifies each module that answers (identification, status, echo), looks
+ * its NodeID up in the module catalogue, and writes a schema-valid robot description.
+ *
+ * <p>Silence at an address means nobody is there and costs only the short scan timeout
+ * ({@link RS485Bus#scanReplyTimeout()}). Every other failure at an address (timeouts after a first answer, CRC
+ * errors, exception responses, unknown NodeIDs) is reported to the listener and in the result, and the scan goes
+ * on. A module slower than the scan timeout is not lost: its late reply arrives during a later address, is
+ * recognised by its address, and the module is asked again with the normal timeout after the scan.
+ */
+public final class RobotExplorer {
+
+    /** The Modbus unicast address range. */
+    public static final int FIRST_ADDRESS = 1;
+    public static final int LAST_ADDRESS = 247;
+
+    /** After this many link failures in a row the link is taken as gone and the scan stops. */
+    private static final int LINK_FAILURES_TO_GIVE_UP = 3;
+    private static final Pattern VERSION = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._\\-]{0,31}");
+
+    private final RS485Bus bus;
+    private final ModuleCatalog catalog;
+    private int firstAddress = FIRST_ADDRESS;
+    private int lastAddress = LAST_ADDRESS;
+    private String host = "localhost";
+
+    public RobotExplorer(RS485Bus bus, ModuleCatalog catalog) {
+        this.bus = bus;
+        this.catalog = catalog;
+    }
+
+    /** Scans only {@code first..last} (default 1..247). */
+    public RobotExplorer addresses(int first, int last) {
+        if (first < FIRST_ADDRESS || last > LAST_ADDRESS || first > last) {
+            throw new IllegalArgumentException("address range " + first + ".." + last + " is not within 1..247");
+        }
+        this.firstAddress = first;
+        this.lastAddress = last;
+        return this;
+    }
+
+    /** The {@code <Host>} of the description: the computer that runs the robot's program (default localhost). */
+    public RobotExplorer host(String hostName) {
+        this.host = hostName;
+        return this;
+    }
+
+    /** How many addresses a scan covers. */
+    public int addressCount() {
+        return lastAddress - firstAddress + 1;
+    }
+
+    /**
+     * Explores the bus.
+     *
+     * @param robotName the {@code <RobotName>}
+     * @throws DescriptionException before scanning, when the robot name or host cannot go into a description
+     */
+    public ExplorationResult explore(String robotName, ExplorationListener listener) throws DescriptionException {
+        RobotDescriptionBuilder.checkNames(robotName, host);
+        long started = System.nanoTime();
+        Scan scan = new Scan(listener);
+        Set<Integer> late = new TreeSet<>();
+        bus.onStrayFrame(frame -> {
+            if (frame.address() >= firstAddress && frame.address() <= lastAddress) {
+                late.add(frame.address());
+            }
+        });
+        try {
+            int total = addressCount();
+            for (int address = firstAddress; address <= lastAddress && !scan.linkGone(); address++) {
+                scan.probe(address);
+                listener.progress(address, address - firstAddress + 1, total);
+            }
+            if (!scan.linkGone()) {
+                bus.listenForStrays(bus.timing().responseTimeout());
+                for (int address : new ArrayList<>(late)) {
+                    scan.askAgain(address);
+                }
+            }
+        } finally {
+            bus.onStrayFrame(null);
+        }
+        return scan.result(robotName, Duration.ofNanos(System.nanoTime() - started));
+    }
+
+    /** The state of one exploration run. */
+    private final class Scan {
+
+        private final ExplorationListener listener;
+        private final List<FoundModule> found = new ArrayList<>();
+        private final List<String> details = new ArrayList<>();
+        private final List<String> docRefs = new ArrayList<>();
+        private final List<AddressProblem> problems = new ArrayList<>();
+        private final List<String> notes = new ArrayList<>();
+        private final Set<Integer> settled = new HashSet<>();
+        private final Set<String> names = new HashSet<>();
+        private int linkFailures;
+
+        Scan(ExplorationListener listener) {
+            this.listener = listener;
+        }
+
+        boolean linkGone() {
+            return linkFailures >= LINK_FAILURES_TO_GIVE_UP;
+        }
+
+        /** First contact with the short scan timeout. */
+        void probe(int address) {
+            try {
+                DeviceIdentification identity = bus.probe(address);
+                linkFailures = 0;
+                settled.add(address);
+                check(address, identity);
+            } catch (BusTimeoutException e) {
+                linkFailures = 0; // nobody there (or slow: a late reply brings it back)
+            } catch (BusException e) {
+                settled.add(address);
+                fail(address, e);
+            }
+        }
+
+        /** A late responder, asked again with the normal timeout and retries. */
+        void askAgain(int address) {
+            if (settled.contains(address)) {
+                return;
+            }
+            settled.add(address);
+            try {
+                check(address, bus.identify(address));
+            } catch (BusException e) {
+                fail(address, e);
+            }
+        }
+
+        private void check(int address, DeviceIdentification identity) {
+            if (!identity.productCode().isEmpty()) {
+                bus.nameModule(address, "module " + identity.productCode()); // later messages say what it is
+            }
+            try {
+                ServerIdReport status = bus.reportServerId(address);
+                if (!status.running()) {
+                    problem(address, AddressProblem.Kind.NOT_RUNNING, "the module reports that it is not running "
+                            + "(run indicator 0x00)");
+                    return;
+                }
+                int word = 0xA500 | address; // differs per address, so a stray echo cannot pass for ours
+                bus.echo(address, word);
+            } catch (BusException e) {
+                fail(address, e);
+                return;
+            }
+            String nodeId = identity.productCode();
+            ModuleDescriptionType description;
+            try {
+                Optional<ModuleDescriptionType> known = catalog.lookUp(nodeId);
+                if (known.isEmpty()) {
+                    problem(address, AddressProblem.Kind.UNKNOWN_NODE_ID, "NodeID '" + nodeId + "' has no description"
+                            + " (looked for " + catalog.fileOf(nodeId) + ")");
+                    return;
+                }
+                description = known.get();
+            } catch (IllegalArgumentException e) {
+                problem(address, AddressProblem.Kind.UNKNOWN_NODE_ID, e.getMessage());
+                return;
+            } catch (DescriptionException e) {
+                problem(address, AddressProblem.Kind.UNKNOWN_NODE_ID, "the description of NodeID '" + nodeId
+                        + "' is invalid: " + e.getMessage().replace('\n', ';'));
+                return;
+            }
+            if (BusModuleClassType.Enum.forString(description.getClass1()) == null) {
+                problem(address, AddressProblem.Kind.UNKNOWN_NODE_ID, "NodeID '" + nodeId + "' describes a "
+                        + description.getClass1() + ", which is not a bus module");
+                return;
+            }
+            String version = identity.revision();
+            if (!VERSION.matcher(version).matches()) {
+                notes.add("address " + address + ": reported version '" + version + "' is not usable; the catalogue's "
+                        + description.getVersion() + " was written instead");
+                version = description.getVersion();
+            }
+            FoundModule module = new FoundModule(address, uniqueName(description.getName(), address), nodeId,
+                    description.getClass1(), version, identity.vendorName());
+            found.add(module);
+            details.add(description.isSetDetails() ? description.getDetails() : null);
+            docRefs.add(description.getDocRef());
+            listener.moduleFound(module);
+        }
+
+        private String uniqueName(String name, int address) {
+            String unique = names.contains(name) ? name + "-" + address : name;
+            names.add(unique);
+            return unique;
+        }
+
+        private void fail(int address, BusException e) {
+            AddressProblem.Kind kind;
+            if (e instanceof BusTimeoutException) {
+                kind = AddressProblem.Kind.TIMEOUT;
+            } else if (e instanceof BusCrcException) {
+                kind = AddressProblem.Kind.CRC_ERROR;
+            } else if (e instanceof ModuleRefusedException) {
+                kind = AddressProblem.Kind.EXCEPTION_RESPONSE;
+            } else if (e instanceof BusProtocolException) {
+                kind = AddressProblem.Kind.PROTOCOL_ERROR;
+            } else {
+                kind = AddressProblem.Kind.LINK_ERROR;
+                linkFailures++;
+            }
+            if (kind != AddressProblem.Kind.LINK_ERROR) {
+                linkFailures = 0;
+            }
+            problem(address, kind, e.getMessage());
+        }
+
+        private void problem(int address, AddressProblem.Kind kind, String message) {
+            AddressProblem problem = new AddressProblem(address, kind, message);
+            problems.add(problem);
+            listener.problem(problem);
+        }
+
+        ExplorationResult result(String robotName, Duration elapsed) throws DescriptionException {
+            if (linkGone()) {
+                notes.add("the scan stopped early: the link failed " + LINK_FAILURES_TO_GIVE_UP + " times in a row");
+            }
+            List<Integer> order = new ArrayList<>();
+            for (int i = 0; i < found.size(); i++) {
+                order.add(i);
+            }
+            order.sort((a, b) -> Integer.compare(found.get(a).address(), found.get(b).address()));
+            List<FoundModule> modules = order.stream().map(found::get).toList();
+            problems.sort((a, b) -> Integer.compare(a.address(), b.address()));
+            Optional<RobotDescriptionDocument> description = Optional.empty();
+            if (!modules.isEmpty()) {
+                String port = bus.portName();
+                if (!RobotDescriptionBuilder.isDescribablePort(port)) {
+                    notes.add("port name '" + port + "' cannot go into <COMPort>; it was left out");
+                    port = null;
+                }
+                description = Optional.of(RobotDescriptionBuilder.build(robotName, host, port, modules,
+                        order.stream().map(details::get).toList(), order.stream().map(docRefs::get).toList()));
+            }
+            return new ExplorationResult(description, modules, problems, notes, elapsed, bus.statistics());
+        }
+    }
+}

@@ -1,0 +1,189 @@
+package robotworld.bus;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Function;
+import org.junit.jupiter.api.Test;
+import robotworld.bus.modbus.Pdus;
+import robotworld.bus.modbus.RtuFrame;
+import robotworld.bus.modbus.RtuTiming;
+
+/** The master's handling of replies at byte level: retries, stray frames, exceptions, quiet calls, link loss. */
+class RtuMasterTest {
+
+    private static final RtuMaster.CallPolicy POLICY = new RtuMaster.CallPolicy(Duration.ofMillis(40), 3, true);
+    private static final byte[] READ_BUMPERS = Pdus.readDiscreteInputs(0, 8);
+    private static final byte[] BUMPERS_REPLY = HexFormat.of().parseHex("020128");
+
+    private final List<RtuFrame> strays = new ArrayList<>();
+
+    private RtuMaster master(ScriptedBusLink link) {
+        BusTiming timing = BusTiming.defaults().withFrameGap(Duration.ZERO);
+        RtuMaster master = new RtuMaster(link, RtuTiming.of(115_200, 86_806), timing,
+                address -> "BumperModule 'Front' at address " + address);
+        master.onStrayFrame(strays::add);
+        link.open();
+        return master;
+    }
+
+    private static byte[] frame(int address, byte[] pdu) {
+        return new RtuFrame(address, pdu).encode();
+    }
+
+    private static byte[] corrupted(byte[] frame) {
+        byte[] copy = frame.clone();
+        copy[copy.length - 1] ^= 0x5A;
+        return copy;
+    }
+
+    /** Answers the first {@code bad} requests with {@code badReply}, then correctly. */
+    private static Function<byte[], List<byte[]>> badThenGood(int bad, Function<byte[], byte[]> badReply) {
+        AtomicInteger calls = new AtomicInteger();
+        return request -> {
+            byte[] good = frame(request[0], BUMPERS_REPLY);
+            return List.of(calls.getAndIncrement() < bad ? badReply.apply(good) : good);
+        };
+    }
+
+    @Test
+    void aCorruptedReplyIsRetried() {
+        ScriptedBusLink link = new ScriptedBusLink(badThenGood(2, RtuMasterTest::corrupted));
+        RtuMaster master = master(link);
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        BusStatistics statistics = master.statistics();
+        assertEquals(3, statistics.transactions());
+        assertEquals(2, statistics.retries());
+        assertEquals(2, statistics.crcErrors());
+    }
+
+    @Test
+    void onlyCorruptedRepliesEndInACrcErrorNamingTheModule() {
+        ScriptedBusLink link = new ScriptedBusLink(badThenGood(99, RtuMasterTest::corrupted));
+        BusCrcException e = assertThrows(BusCrcException.class, () -> master(link).call(2, READ_BUMPERS, POLICY));
+        assertEquals(2, e.address());
+        assertTrue(e.getMessage().contains("BumperModule 'Front' at address 2 on script://bus"), e.getMessage());
+        assertTrue(e.getMessage().contains("3 attempts"), e.getMessage());
+    }
+
+    @Test
+    void aReplyCutShortCountsAsCorruptedAndIsRetried() {
+        ScriptedBusLink link = new ScriptedBusLink(badThenGood(1, good -> java.util.Arrays.copyOf(good, 4)));
+        RtuMaster master = master(link);
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(1, master.statistics().crcErrors());
+    }
+
+    @Test
+    void silenceIsATimeoutAfterEveryAttempt() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of());
+        RtuMaster master = master(link);
+        BusTimeoutException e = assertThrows(BusTimeoutException.class, () -> master.call(7, READ_BUMPERS, POLICY));
+        assertTrue(e.getMessage().contains("address 7"), e.getMessage());
+        assertTrue(e.getMessage().contains("no reply to read discrete inputs (0x02) within 40 ms (3 attempts)"),
+                e.getMessage());
+        assertEquals(3, link.written().size());
+    }
+
+    @Test
+    void aScanDoesNotRetrySilence() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of());
+        RtuMaster master = master(link);
+        RtuMaster.CallPolicy scan = new RtuMaster.CallPolicy(Duration.ofMillis(5), 3, false);
+        assertThrows(BusTimeoutException.class, () -> master.call(7, READ_BUMPERS, scan));
+        assertEquals(1, link.written().size());
+    }
+
+    @Test
+    void aLateReplyFromAnotherAddressIsAStrayFrameNotTheAnswer() {
+        byte[] late = frame(5, BUMPERS_REPLY);
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(late, frame(request[0], HexFormat.of()
+                .parseHex("020101"))));
+        RtuMaster master = master(link);
+        assertArrayEquals(HexFormat.of().parseHex("020101"), master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(List.of(RtuFrame.decode(late, late.length)), strays);
+    }
+
+    @Test
+    void bytesWaitingBeforeARequestAreDrainedAndReportedWhenTheyAreAFrame() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(frame(request[0], BUMPERS_REPLY)));
+        RtuMaster master = master(link);
+        link.inject(frame(9, BUMPERS_REPLY));
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(9, strays.get(0).address());
+        link.inject(new byte[] {1, 2, 3});
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(1, strays.size(), "noise is dropped, not reported");
+    }
+
+    @Test
+    void anExceptionResponseIsNotRetried() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(frame(request[0], new byte[] {(byte) 0x82, 2})));
+        RtuMaster master = master(link);
+        ModuleRefusedException e = assertThrows(ModuleRefusedException.class,
+                () -> master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(2, e.exceptionCode());
+        assertEquals(0x02, e.functionCode());
+        assertTrue(e.getMessage().contains("Modbus exception 2 (illegal data address)"), e.getMessage());
+        assertEquals(1, link.written().size());
+        assertEquals(1, master.statistics().exceptionResponses());
+    }
+
+    @Test
+    void aReplyWithTheWrongFunctionIsAProtocolError() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(frame(request[0], HexFormat.of()
+                .parseHex("0302FFFF"))));
+        BusProtocolException e = assertThrows(BusProtocolException.class,
+                () -> master(link).call(2, READ_BUMPERS, POLICY));
+        assertTrue(e.getMessage().contains("unexpected reply"), e.getMessage());
+    }
+
+    @Test
+    void aReplyInPiecesIsAssembled() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> {
+            byte[] whole = frame(request[0], BUMPERS_REPLY);
+            return List.of(java.util.Arrays.copyOf(whole, 2), java.util.Arrays.copyOfRange(whole, 2, whole.length));
+        });
+        assertArrayEquals(BUMPERS_REPLY, master(link).call(2, READ_BUMPERS, POLICY));
+    }
+
+    @Test
+    void aQuietCallReturnsAtOnceAndItsReplyIsConsumedBeforeTheNextCall() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(request.clone()));
+        RtuMaster master = master(link);
+        byte[] write = Pdus.writeSingleRegister(0, 500);
+        master.callQuietly(1, write, Duration.ofMillis(40));
+        assertEquals(1, link.written().size());
+        link.respondWith(request -> List.of(frame(request[0], BUMPERS_REPLY)));
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertTrue(strays.isEmpty(), "the quiet call's confirmation is not taken for a stray frame");
+    }
+
+    @Test
+    void aQuietCallWithoutConfirmationDoesNotDisturbTheNextCall() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of());
+        RtuMaster master = master(link);
+        master.callQuietly(1, Pdus.writeSingleRegister(0, 500), Duration.ofMillis(10));
+        link.respondWith(request -> List.of(frame(request[0], BUMPERS_REPLY)));
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(1, master.statistics().timeouts());
+    }
+
+    @Test
+    void aLostLinkFailsTheCallAndIsReopenedForTheNext() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(frame(request[0], BUMPERS_REPLY)));
+        RtuMaster master = master(link);
+        link.failNextWrite();
+        BusException e = assertThrows(BusException.class, () -> master.call(2, READ_BUMPERS, POLICY));
+        assertTrue(e.getMessage().contains("the link failed"), e.getMessage());
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(2, link.opens());
+    }
+}
