@@ -20,20 +20,18 @@ import org.apache.xmlbeans.XmlObject;
  */
 final class DescriptionRules {
 
-    private static final Set<String> JAVA_RESERVED = Set.of(
-            "abstract", "assert", "boolean", "break", "byte", "case", "catch", "char", "class", "const",
-            "continue", "default", "do", "double", "else", "enum", "extends", "final", "finally", "float", "for",
-            "goto", "if", "implements", "import", "instanceof", "int", "interface", "long", "native", "new",
-            "package", "private", "protected", "public", "return", "short", "static", "strictfp", "super",
-            "switch", "synchronized", "this", "throw", "throws", "transient", "try", "void", "volatile", "while",
-            "true", "false", "null", "_", "var", "yield", "record", "sealed", "permits", "non-sealed");
-
     /** Class names the generated code refers to; a participant class of the same name would shadow them. */
     private static final Set<String> RESERVED_CLASS_NAMES = Set.of(
             "Object", "String", "System", "Thread", "Math", "Exception", "RuntimeException", "Integer", "Long",
             "Double", "Boolean", "Runtime", "Override", "InterruptedException",
             "MotorModule", "ServoModule", "BumperModule", "IRDistanceModule", "X10LampModule",
             "X10ApplianceModule", "RS485Bus");
+
+    /** Generated code names module fields <Class><n>, e.g. MotorModule1. */
+    private static final java.util.regex.Pattern GENERATED_FIELD_NAME =
+            java.util.regex.Pattern.compile("[A-Za-z0-9_]*Module[0-9]+");
+
+    private static final Set<String> GENERATED_CONSTANTS = Set.of("NAME", "HOST", "SPACE_URL");
 
     private final String source;
     private final List<DescriptionError> errors = new ArrayList<>();
@@ -58,7 +56,7 @@ final class DescriptionRules {
         identifier(world.xgetWorldName(), world.getWorldName(), "world name");
         if (world.isSetPackageName()) {
             for (String segment : world.getPackageName().split("\\.")) {
-                if (JAVA_RESERVED.contains(segment)) {
+                if (JavaNames.isReserved(segment)) {
                     error(world.xgetPackageName(), "package name '" + world.getPackageName()
                             + "' contains the Java keyword '" + segment + "'");
                 }
@@ -106,6 +104,10 @@ final class DescriptionRules {
 
     private void participantName(XmlObject at, String name) {
         identifier(at, name, "participant name");
+        if (GENERATED_FIELD_NAME.matcher(name).matches() || GENERATED_CONSTANTS.contains(name)) {
+            error(at, "participant name '" + name + "' has the form of a generated field name (<Class><n>,"
+                    + " NAME, HOST, SPACE_URL); choose another name");
+        }
         if (RESERVED_CLASS_NAMES.contains(name)) {
             error(at, "participant name '" + name + "' would hide the class " + name
                     + " in generated code; choose another name");
@@ -113,7 +115,7 @@ final class DescriptionRules {
     }
 
     private void identifier(XmlObject at, String name, String what) {
-        if (JAVA_RESERVED.contains(name)) {
+        if (JavaNames.isReserved(name)) {
             error(at, what + " '" + name + "' is a Java keyword and cannot name a class or package");
         }
     }

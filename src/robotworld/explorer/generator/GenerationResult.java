@@ -1,0 +1,16 @@
+package robotworld.explorer.generator;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+
+/**
+ * A generated project.
+ *
+ * @param destination the project directory
+ * @param mainClass   the qualified name of the class with {@code main} (the viewpoint's program)
+ * @param files       every file written, under {@code destination}
+ * @param elapsed     how long generation took
+ */
+public record GenerationResult(Path destination, String mainClass, List<Path> files, Duration elapsed) {
+}

@@ -1,0 +1,66 @@
+package robotworld.explorer.generator;
+
+import java.io.IOException;
+import java.io.ByteArrayOutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import javax.tools.JavaCompiler;
+import javax.tools.ToolProvider;
+
+/** Test helper: inspects, edits and compiles a generated project. */
+public final class GeneratedProject {
+
+    public static final String CONTROL_BEGIN = "// >>> control logic begins here";
+
+    private final Path root;
+
+    public GeneratedProject(Path root) {
+        this.root = root;
+    }
+
+    public Path root() {
+        return root;
+    }
+
+    public List<Path> sources() throws IOException {
+        try (Stream<Path> files = Files.walk(root.resolve("src"))) {
+            return files.filter(f -> f.toString().endsWith(".java")).sorted().collect(Collectors.toList());
+        }
+    }
+
+    public List<Path> libraries() throws IOException {
+        try (Stream<Path> files = Files.list(root.resolve("lib"))) {
+            return files.filter(f -> f.toString().endsWith(".jar")).sorted().collect(Collectors.toList());
+        }
+    }
+
+    public String read(String relative) throws IOException {
+        return Files.readString(root.resolve(relative));
+    }
+
+    /** Puts {@code snippet} at the marked place of the control program in {@code mainSource}. */
+    public void insertControlLogic(String mainSource, String snippet) throws IOException {
+        Path file = root.resolve(mainSource);
+        String source = Files.readString(file);
+        if (!source.contains(CONTROL_BEGIN)) {
+            throw new IllegalStateException(mainSource + " has no marked place for control logic");
+        }
+        Files.writeString(file, source.replace(CONTROL_BEGIN, CONTROL_BEGIN + "\n" + snippet));
+    }
+
+    /** Compiles src/ against lib/ with the JDK's compiler; returns the diagnostics, empty when it compiled. */
+    public String compile(Path classes) throws IOException {
+        JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
+        List<String> arguments = new ArrayList<>(List.of("-d", classes.toString(), "-encoding", "UTF-8",
+                "-Xlint:none", "-cp", libraries().stream().map(Path::toString)
+                        .collect(Collectors.joining(java.io.File.pathSeparator))));
+        sources().forEach(source -> arguments.add(source.toString()));
+        ByteArrayOutputStream diagnostics = new ByteArrayOutputStream();
+        int result = compiler.run(null, null, diagnostics, arguments.toArray(String[]::new));
+        return result == 0 ? "" : "javac failed:\n" + diagnostics;
+    }
+}
