@@ -36,6 +36,11 @@ public final class DescriptionLoader {
         return (RobotWorldDocument) load(file, DescriptionKind.ROBOT_WORLD);
     }
 
+    /** Loads a RobotWorld validated against the given schemas (e.g. with extra module types). */
+    public static RobotWorldDocument loadWorld(Path file, DescriptionSchemas schemas) throws DescriptionException {
+        return (RobotWorldDocument) load(file, DescriptionKind.ROBOT_WORLD, schemas);
+    }
+
     public static RobotWorldDocument loadWorld(InputStream in, String sourceName) throws DescriptionException {
         return (RobotWorldDocument) load(in, sourceName, DescriptionKind.ROBOT_WORLD);
     }
@@ -57,8 +62,17 @@ public final class DescriptionLoader {
         return (ModuleDescriptionDocument) load(file, DescriptionKind.MODULE);
     }
 
-    /** Loads a description of the expected kind, or of any kind when {@code expected} is null. */
+    /**
+     * Loads a description of the expected kind, or of any kind when {@code expected} is null, validated against
+     * {@link DescriptionSchemas#configured()}.
+     */
     public static XmlObject load(Path file, DescriptionKind expected) throws DescriptionException {
+        return load(file, expected, DescriptionSchemas.configured());
+    }
+
+    /** Loads a description of the expected kind (any kind when null), validated against {@code schemas}. */
+    public static XmlObject load(Path file, DescriptionKind expected, DescriptionSchemas schemas)
+            throws DescriptionException {
         String source = file.toString();
         byte[] bytes;
         try {
@@ -73,7 +87,7 @@ public final class DescriptionLoader {
         } catch (IOException e) {
             throw failure(source, 0, 0, "cannot read: " + e.getMessage());
         }
-        return parseAndCheck(bytes, source, expected);
+        return parseAndCheck(bytes, source, expected, schemas);
     }
 
     /** Loads a description of the expected kind (any kind when null) from a stream; the stream is not closed. */
@@ -88,7 +102,7 @@ public final class DescriptionLoader {
         if (bytes.length > MAX_BYTES) {
             throw failure(sourceName, 0, 0, "input exceeds " + MAX_BYTES + " bytes");
         }
-        return parseAndCheck(bytes, sourceName, expected);
+        return parseAndCheck(bytes, sourceName, expected, DescriptionSchemas.configured());
     }
 
     /** Which kind of description a loaded document is. */
@@ -106,22 +120,39 @@ public final class DescriptionLoader {
      * Positions are reported where the document still knows them.
      */
     public static void validate(XmlObject document, String sourceName) throws DescriptionException {
-        List<DescriptionError> errors = schemaErrors(document, sourceName);
+        List<XmlError> schemaErrors = new ArrayList<>();
+        document.validate(new XmlOptions().setErrorListener(schemaErrors));
+        check(document, sourceName, schemaErrors);
+    }
+
+    private static XmlObject parseAndCheck(byte[] bytes, String source, DescriptionKind expected,
+                                           DescriptionSchemas schemas) throws DescriptionException {
+        XmlObject parsed = parse(bytes, source);
+        DescriptionKind kind = checkRoot(parsed, source, expected);
+        XmlObject typed = parsed.changeType(kind.documentType());
+        if (schemas.isBuiltIn()) {
+            validate(typed, source);
+        } else {
+            check(typed, source, schemas.validate(bytes, source));
+        }
+        return typed;
+    }
+
+    /** Schema errors first; only a schema-valid document is worth the semantic rules. */
+    private static void check(XmlObject document, String source, List<XmlError> schemaErrors)
+            throws DescriptionException {
+        List<DescriptionError> errors = new ArrayList<>(schemaErrors.size());
+        for (XmlError error : schemaErrors) {
+            errors.add(new DescriptionError(source, Math.max(error.getLine(), 0), Math.max(error.getColumn(), 0),
+                    ErrorMessages.schemaMessage(error.getMessage())));
+        }
+        errors = ErrorMessages.withoutCascades(errors);
         if (errors.isEmpty()) {
-            errors = DescriptionRules.check(document, sourceName);
+            errors = DescriptionRules.check(document, source);
         }
         if (!errors.isEmpty()) {
             throw new DescriptionException(errors);
         }
-    }
-
-    private static XmlObject parseAndCheck(byte[] bytes, String source, DescriptionKind expected)
-            throws DescriptionException {
-        XmlObject parsed = parse(bytes, source);
-        DescriptionKind kind = checkRoot(parsed, source, expected);
-        XmlObject typed = parsed.changeType(kind.documentType());
-        validate(typed, source);
-        return typed;
     }
 
     private static XmlObject parse(byte[] bytes, String source) throws DescriptionException {
@@ -183,17 +214,6 @@ public final class DescriptionLoader {
             }
             return kind;
         }
-    }
-
-    private static List<DescriptionError> schemaErrors(XmlObject document, String source) {
-        List<XmlError> found = new ArrayList<>();
-        document.validate(new XmlOptions().setErrorListener(found));
-        List<DescriptionError> errors = new ArrayList<>(found.size());
-        for (XmlError error : found) {
-            errors.add(new DescriptionError(source, Math.max(error.getLine(), 0), Math.max(error.getColumn(), 0),
-                    ErrorMessages.schemaMessage(error.getMessage())));
-        }
-        return ErrorMessages.withoutCascades(errors);
     }
 
     static DescriptionException failure(String source, int line, int column, String message) {

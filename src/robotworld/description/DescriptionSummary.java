@@ -34,7 +34,7 @@ public final class DescriptionSummary {
         }
         if (document instanceof ModuleDescriptionDocument doc) {
             ModuleDescriptionType module = doc.getModuleDescription();
-            return "module description " + module.getNodeID() + " (" + module.getClass1().toString() + ")";
+            return "module description " + module.getNodeID() + " (" + ModuleClassName.of(module) + ")";
         }
         return document.schemaType().toString();
     }

@@ -10,6 +10,9 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import robotworld.description.DescriptionError;
 import robotworld.description.DescriptionException;
+import robotworld.description.DescriptionLoader;
+import robotworld.description.DescriptionSchemas;
+import robotworld.description.RobotWorldDocument;
 import robotworld.explorer.FrameworkGenerator;
 import robotworld.explorer.generator.GenerationException;
 import robotworld.explorer.generator.GenerationResult;
@@ -39,6 +42,10 @@ final class GenerateCommand implements Callable<Integer> {
     @Option(names = "--force", description = "replace DIR if it exists and is not empty")
     private boolean force;
 
+    @Option(names = "--schemas", paramLabel = "DIR",
+            description = "validate against the schemas in DIR (e.g. with added module types) instead of the built-in ones")
+    private Path schemaDirectory;
+
     @Spec
     private CommandSpec spec;
 
@@ -47,7 +54,11 @@ final class GenerateCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try {
-            GenerationResult result = new FrameworkGenerator().generate(world, viewpoint, packageName, this.out,
+            DescriptionSchemas schemas = schemaDirectory == null ? DescriptionSchemas.configured()
+                    : DescriptionSchemas.fromDirectory(schemaDirectory);
+            err.printf("validating %s%n", world);
+            RobotWorldDocument loaded = DescriptionLoader.loadWorld(world, schemas);
+            GenerationResult result = new FrameworkGenerator().generate(loaded, viewpoint, packageName, this.out,
                     force, (done, total, step) -> err.printf("[%d/%d] %s%n", done, total, step));
             out.printf("generated %s (%d files, %d ms)%n  main class: %s%n  build and run: cd %s && ant run%n",
                     result.destination(), result.files().size(), result.elapsed().toMillis(), result.mainClass(),

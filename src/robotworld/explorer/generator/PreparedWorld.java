@@ -11,6 +11,7 @@ import org.apache.xmlbeans.XmlObject;
 import robotworld.description.DescriptionKind;
 import robotworld.description.EnvModuleListType;
 import robotworld.description.JavaNames;
+import robotworld.description.ModuleClassName;
 import robotworld.description.ModuleListType;
 import robotworld.description.ModuleType;
 import robotworld.description.RobotWorldDocument;
@@ -135,15 +136,15 @@ public final class PreparedWorld {
         Map<String, Integer> perClass = new HashMap<>();
         for (EnvModuleListType environment : world.getEnvironmentArray()) {
             for (X10ModuleType module : environment.getX10ModuleArray()) {
-                setField(module, module.xgetClass1().getStringValue(), perClass);
+                setField(module, ModuleClassName.of(module), perClass);
             }
             for (ModuleType module : environment.getModuleArray()) {
-                setField(module, module.xgetClass1().getStringValue(), perClass);
+                setField(module, ModuleClassName.of(module), perClass);
             }
         }
         for (ModuleListType robot : world.getRobotDescriptionArray()) {
             for (ModuleType module : robot.getModuleArray()) {
-                setField(module, module.xgetClass1().getStringValue(), perClass);
+                setField(module, ModuleClassName.of(module), perClass);
             }
         }
     }
