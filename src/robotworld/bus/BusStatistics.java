@@ -9,7 +9,9 @@ package robotworld.bus;
  * @param crcErrors replies with a wrong CRC or cut short
  * @param exceptionResponses replies that refused the request
  * @param strayFrames valid frames from another address than the one asked (late replies)
+ * @param staleReplies late replies from an address whose request had timed out, discarded before that address was
+ *        asked again (so that they could not pass for the new answer)
  */
 public record BusStatistics(long transactions, long retries, long timeouts, long crcErrors,
-        long exceptionResponses, long strayFrames) {
+        long exceptionResponses, long strayFrames, long staleReplies) {
 }

@@ -20,6 +20,12 @@ import robotworld.bus.modbus.RtuTiming;
  * The client (master) end of Modbus RTU over a {@link SerialLink}: one transaction at a time, replies found by
  * their computed length (silences do not survive TCP or ptys), corrupted replies retried, late replies from other
  * addresses recognised as stray frames instead of being mistaken for the awaited one.
+ *
+ * <p>A late reply from the <em>same</em> address cannot be told apart by its bytes (reading one bumper and reading
+ * all eight both answer {@code 02 01 xx}), so an unanswered request leaves a debt: the reply is <em>owed</em> until
+ * it arrives or until the late-reply window ({@value #LATE_REPLY_TIMEOUTS} reply timeouts after the request) has
+ * passed, and that address is not asked anything new before. Owed replies that arrive are discarded as
+ * <em>stale</em>; the other addresses are not held up (their replies are told apart by address).
  */
 final class RtuMaster {
 
@@ -27,6 +33,13 @@ final class RtuMaster {
 
     /** Upper bound for skipping a stream of garbage after a corrupted reply. */
     private static final long MAX_RESYNC_NANOS = 500_000_000L;
+
+    /**
+     * How long, in (normal) reply timeouts from the end of an unanswered request, its reply may still arrive and
+     * is waited for before the same address is asked again. Covers a module or machine up to four timeouts late;
+     * costs nothing unless an address did not answer, and then at most once, before the next request to it.
+     */
+    static final int LATE_REPLY_TIMEOUTS = 4;
 
     /**
      * How one call is made.
@@ -38,20 +51,21 @@ final class RtuMaster {
     record CallPolicy(Duration replyTimeout, int attempts, boolean retryTimeouts) {
     }
 
-    private enum Kind { OK, TIMEOUT, CORRUPT, WRONG_FUNCTION }
+    private enum Kind { OK, TIMEOUT, CORRUPT, WRONG_FUNCTION, REFUSED }
 
     private record Reply(Kind kind, byte[] pdu) {
         static final Reply TIMEOUT = new Reply(Kind.TIMEOUT, null);
         static final Reply CORRUPT = new Reply(Kind.CORRUPT, null);
     }
 
-    private record Pending(int address, byte[] pdu, long deadline) {
+    private record Pending(int address, byte[] pdu, long sent, long deadline) {
     }
 
     private final SerialLink link;
     private final RtuTiming timing;
     private final long frameGapNanos;
     private final long interByteNanos;
+    private final long lateReplyNanos;
     private final IntFunction<String> describe;
     private final byte[] buffer = new byte[2 * RtuFrame.MAX_LENGTH];
     private final AtomicLong transactions = new AtomicLong();
@@ -60,6 +74,11 @@ final class RtuMaster {
     private final AtomicLong crcErrors = new AtomicLong();
     private final AtomicLong exceptionResponses = new AtomicLong();
     private final AtomicLong strayFrames = new AtomicLong();
+    private final AtomicLong staleReplies = new AtomicLong();
+    /** Per address: how many replies are owed (requests that timed out), the last such request, until when. */
+    private final int[] owed = new int[248];
+    private final byte[][] owedRequest = new byte[248][];
+    private final long[] owedUntil = new long[248];
     private volatile Consumer<RtuFrame> strayListener = frame -> { };
     private long lineQuietSince = System.nanoTime();
     private Pending pending;
@@ -74,6 +93,7 @@ final class RtuMaster {
         this.frameGapNanos = busTiming.frameGap().equals(BusTiming.AUTO_FRAME_GAP) ? timing.t35Nanos()
                 : busTiming.frameGap().toNanos();
         this.interByteNanos = busTiming.interByteTimeout().toNanos();
+        this.lateReplyNanos = LATE_REPLY_TIMEOUTS * busTiming.responseTimeout().toNanos();
         this.describe = describe;
     }
 
@@ -100,24 +120,37 @@ final class RtuMaster {
         byte[] frame = new RtuFrame(address, pdu).encode();
         FrameLength length = FrameLengths.responseTo(pdu);
         Reply last = null;
-        for (int attempt = 1; attempt <= policy.attempts(); attempt++) {
-            if (attempt > 1) {
-                retries.incrementAndGet();
-            }
-            long deadline = send(address, frame) + policy.replyTimeout().toNanos();
-            Reply reply = readReply(address, pdu, length, deadline);
-            if (reply.kind() == Kind.OK) {
-                return reply.pdu();
-            }
-            last = reply;
-            if (reply.kind() == Kind.TIMEOUT) {
-                timeouts.incrementAndGet();
-                if (!policy.retryTimeouts()) {
-                    throw failure(address, pdu, reply, attempt, policy);
+        int unanswered = 0;
+        long lastUnansweredSent = 0;
+        try {
+            for (int attempt = 1; attempt <= policy.attempts(); attempt++) {
+                if (attempt > 1) {
+                    retries.incrementAndGet();
+                }
+                long sent = send(address, frame);
+                // a late reply to an earlier attempt of this call answers the same request: it is accepted
+                Reply reply = readReply(address, pdu, length, sent + policy.replyTimeout().toNanos());
+                if (reply.kind() == Kind.OK) {
+                    return reply.pdu();
+                }
+                if (reply.kind() == Kind.REFUSED) {
+                    throw refused(address, pdu, reply.pdu());
+                }
+                last = reply;
+                if (reply.kind() == Kind.TIMEOUT) {
+                    timeouts.incrementAndGet();
+                    unanswered++;
+                    lastUnansweredSent = sent;
+                    if (!policy.retryTimeouts()) {
+                        throw failure(address, pdu, reply, attempt, policy);
+                    }
                 }
             }
+            throw failure(address, pdu, last, policy.attempts(), policy);
+        } finally {
+            // n requests, at most one reply taken per answered attempt: one still owed per unanswered attempt
+            owe(address, pdu, unanswered, lastUnansweredSent);
         }
-        throw failure(address, pdu, last, policy.attempts(), policy);
     }
 
     /**
@@ -126,8 +159,8 @@ final class RtuMaster {
      */
     synchronized void callQuietly(int address, byte[] pdu, Duration replyTimeout) {
         settlePending();
-        long deadline = send(address, new RtuFrame(address, pdu).encode()) + replyTimeout.toNanos();
-        pending = new Pending(address, pdu, deadline);
+        long sent = send(address, new RtuFrame(address, pdu).encode());
+        pending = new Pending(address, pdu, sent, sent + replyTimeout.toNanos());
     }
 
     /**
@@ -141,13 +174,14 @@ final class RtuMaster {
 
     BusStatistics statistics() {
         return new BusStatistics(transactions.get(), retries.get(), timeouts.get(), crcErrors.get(),
-                exceptionResponses.get(), strayFrames.get());
+                exceptionResponses.get(), strayFrames.get(), staleReplies.get());
     }
 
     /** Writes a frame after the line has been quiet for the frame gap; returns when it has left the wire. */
     private long send(int address, byte[] frame) {
         try {
             reopenIfBroken();
+            awaitOwedReplies(address);
             drainStale();
             sleepUntil(lineQuietSince + frameGapNanos);
             link.write(frame);
@@ -215,12 +249,17 @@ final class RtuMaster {
         }
         if (answered == (requested | FunctionCodes.EXCEPTION_BIT) && response.length == 2) {
             exceptionResponses.incrementAndGet();
-            int code = response[1] & 0xFF;
-            throw new ModuleRefusedException(link.portName(), address, describe.apply(address) + " on "
-                    + link.portName() + " refused " + FunctionCodes.name(requested) + " with Modbus exception "
-                    + code + " (" + ExceptionCodes.name(code) + ")", requested, code);
+            return new Reply(Kind.REFUSED, response);
         }
         return new Reply(Kind.WRONG_FUNCTION, response);
+    }
+
+    private ModuleRefusedException refused(int address, byte[] request, byte[] response) {
+        int requested = request[0] & 0xFF;
+        int code = response[1] & 0xFF;
+        return new ModuleRefusedException(link.portName(), address, describe.apply(address) + " on "
+                + link.portName() + " refused " + FunctionCodes.name(requested) + " with Modbus exception "
+                + code + " (" + ExceptionCodes.name(code) + ")", requested, code);
     }
 
     private Reply corrupt(int address, int length, String what) throws IOException {
@@ -236,19 +275,57 @@ final class RtuMaster {
         }
         Pending quiet = pending;
         pending = null;
-        try {
-            Reply reply = readReply(quiet.address(), quiet.pdu(), FrameLengths.responseTo(quiet.pdu()),
-                    quiet.deadline());
-            if (reply.kind() == Kind.TIMEOUT) {
-                timeouts.incrementAndGet();
-            }
-            if (reply.kind() != Kind.OK) {
-                LOG.warn("{} on {}: quiet {} got no valid reply ({})", describe.apply(quiet.address()),
-                        link.portName(), FunctionCodes.name(quiet.pdu()[0]), reply.kind());
-            }
-        } catch (ModuleRefusedException e) {
-            LOG.warn("quiet call: {}", e.getMessage());
+        Reply reply = readReply(quiet.address(), quiet.pdu(), FrameLengths.responseTo(quiet.pdu()),
+                quiet.deadline());
+        if (reply.kind() == Kind.TIMEOUT) {
+            timeouts.incrementAndGet();
+            owe(quiet.address(), quiet.pdu(), 1, quiet.sent());
         }
+        if (reply.kind() == Kind.REFUSED) {
+            LOG.warn("quiet call: {}", refused(quiet.address(), quiet.pdu(), reply.pdu()).getMessage());
+        } else if (reply.kind() != Kind.OK) {
+            LOG.warn("{} on {}: quiet {} got no valid reply ({})", describe.apply(quiet.address()),
+                    link.portName(), FunctionCodes.name(quiet.pdu()[0]), reply.kind());
+        }
+    }
+
+    /** Records replies still owed by {@code address}: {@code count} requests, the last sent at {@code sent}. */
+    private void owe(int address, byte[] request, int count, long sent) {
+        if (count > 0) {
+            owed[address] += count;
+            owedRequest[address] = request;
+            owedUntil[address] = sent + lateReplyNanos;
+        }
+    }
+
+    /**
+     * Before {@code address} is asked anything new, its owed late replies are waited for and discarded, so none of
+     * them can pass for the answer to the new request; the wait ends as soon as all have come, at the latest when
+     * the late-reply window closes. Frames from other addresses meanwhile are stray frames as usual.
+     */
+    private void awaitOwedReplies(int address) throws IOException {
+        if (owed[address] == 0) {
+            return; // the normal path: nothing to wait for
+        }
+        byte[] request = owedRequest[address];
+        FrameLength length = FrameLengths.responseTo(request);
+        while (owed[address] > 0) {
+            Reply reply = readReply(address, request, length, owedUntil[address]);
+            if (reply.kind() == Kind.TIMEOUT) {
+                LOG.debug("{} on {}: {} owed replies did not come within the late-reply window",
+                        describe.apply(address), link.portName(), owed[address]);
+                break;
+            }
+            if (reply.kind() != Kind.CORRUPT) { // a corrupted frame may be noise: the reply may still come
+                owed[address]--;
+                staleReplies.incrementAndGet();
+                LOG.debug("{} on {}: discarded a stale reply to an earlier {}: {}", describe.apply(address),
+                        link.portName(), FunctionCodes.name(request[0]), RtuFrame.hex(reply.pdu(),
+                                reply.pdu().length));
+            }
+        }
+        owed[address] = 0;
+        owedRequest[address] = null;
     }
 
     /** Bytes waiting before a request belong to nobody's reply any more: report valid frames, drop the rest. */
@@ -283,6 +360,9 @@ final class RtuMaster {
 
     private void stray(RtuFrame frame) {
         strayFrames.incrementAndGet();
+        if (frame.address() < owed.length && owed[frame.address()] > 0) {
+            owed[frame.address()]--; // a late reply to a request that timed out: no longer owed
+        }
         LOG.debug("stray frame on {}: {}", link.portName(), frame);
         strayListener.accept(frame);
     }

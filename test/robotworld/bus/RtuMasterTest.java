@@ -9,6 +9,10 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HexFormat;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Function;
 import org.junit.jupiter.api.Test;
@@ -185,5 +189,87 @@ class RtuMasterTest {
         assertTrue(e.getMessage().contains("the link failed"), e.getMessage());
         assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
         assertEquals(2, link.opens());
+    }
+
+    // ----- late replies from the address asked (a reply after its request timed out) -----
+
+    /** One attempt, 40 ms: the late-reply window is 4 x the bus's 100 ms reply timeout = 400 ms. */
+    private static final RtuMaster.CallPolicy ONCE = new RtuMaster.CallPolicy(Duration.ofMillis(40), 1, true);
+
+    @Test
+    void aLateReplyToATimedOutRequestIsDiscardedNotTakenForTheNextAnswer() {
+        // a slow module that answers in order: "bumper 4 has contact" (02 01 01) comes 60 ms after that request,
+        // when the master has given up on it; reading all eight bumpers asks the same address the same shape
+        byte[] readBumper4 = Pdus.readDiscreteInputs(3, 1);
+        CompletableFuture<Void> lateReplySent = new CompletableFuture<>();
+        ScheduledExecutorService module = Executors.newSingleThreadScheduledExecutor();
+        try {
+            ScriptedBusLink link = new ScriptedBusLink(request -> List.of());
+            link.respondWith(request -> {
+                if (request[3] == 3) { // bumper 4
+                    module.schedule(() -> {
+                        link.inject(frame(2, HexFormat.of().parseHex("020101")));
+                        lateReplySent.complete(null);
+                    }, 60, TimeUnit.MILLISECONDS);
+                } else { // all bumpers: answered at once, but not before the late reply has gone out
+                    lateReplySent.thenRun(() -> link.inject(frame(2, BUMPERS_REPLY)));
+                }
+                return List.of();
+            });
+            RtuMaster master = master(link);
+            assertThrows(BusTimeoutException.class, () -> master.call(2, readBumper4, ONCE));
+            assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, ONCE),
+                    "the mask 0x28, not the late single-bumper reply 02 01 01");
+            assertEquals(1, master.statistics().staleReplies());
+            assertEquals(0, master.statistics().strayFrames());
+            assertTrue(strays.isEmpty(), "a stale reply is not a stray frame");
+            assertEquals(2, link.written().size());
+        } finally {
+            module.shutdownNow();
+        }
+    }
+
+    @Test
+    void anAddressThatDidNotAnswerIsAskedAgainOnlyAfterTheLateReplyWindowOthersAtOnce() {
+        List<Long> writtenAt = new ArrayList<>();
+        AtomicInteger toSeven = new AtomicInteger();
+        ScriptedBusLink link = new ScriptedBusLink(request -> {
+            writtenAt.add(System.nanoTime());
+            boolean silent = request[0] == 7 && toSeven.getAndIncrement() == 0;
+            return silent ? List.of() : List.of(frame(request[0], BUMPERS_REPLY));
+        });
+        RtuMaster master = master(link);
+        assertThrows(BusTimeoutException.class, () -> master.call(7, READ_BUMPERS, ONCE));
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, ONCE));
+        assertArrayEquals(BUMPERS_REPLY, master.call(7, READ_BUMPERS, ONCE));
+        long toOther = (writtenAt.get(1) - writtenAt.get(0)) / 1_000_000;
+        long again = (writtenAt.get(2) - writtenAt.get(0)) / 1_000_000;
+        assertTrue(toOther < 300, "another address is asked at once, after " + toOther + " ms");
+        assertTrue(again >= 399, "address 7 is asked again after the 400 ms window, not after " + again + " ms");
+        assertEquals(0, master.statistics().staleReplies());
+    }
+
+    @Test
+    void aLateReplyHeardAsAStrayFrameIsNoLongerOwed() {
+        // how exploration works: a probe times out, the late reply arrives while the next address is asked, and
+        // the module is asked again at once
+        List<Long> writtenAt = new ArrayList<>();
+        AtomicInteger toSeven = new AtomicInteger();
+        ScriptedBusLink link = new ScriptedBusLink(request -> {
+            writtenAt.add(System.nanoTime());
+            if (request[0] == 7) {
+                return toSeven.getAndIncrement() == 0 ? List.of() : List.of(frame(7, BUMPERS_REPLY));
+            }
+            return List.of(frame(7, HexFormat.of().parseHex("020101")), frame(request[0], BUMPERS_REPLY));
+        });
+        RtuMaster master = master(link);
+        RtuMaster.CallPolicy scan = new RtuMaster.CallPolicy(Duration.ofMillis(5), 3, false);
+        assertThrows(BusTimeoutException.class, () -> master.call(7, READ_BUMPERS, scan));
+        assertArrayEquals(BUMPERS_REPLY, master.call(8, READ_BUMPERS, scan));
+        assertEquals(List.of(7), strays.stream().map(RtuFrame::address).toList());
+        assertArrayEquals(BUMPERS_REPLY, master.call(7, READ_BUMPERS, POLICY));
+        long again = (writtenAt.get(2) - writtenAt.get(0)) / 1_000_000;
+        assertTrue(again < 300, "no wait for a reply already heard: asked again after " + again + " ms");
+        assertEquals(0, master.statistics().staleReplies());
     }
 }

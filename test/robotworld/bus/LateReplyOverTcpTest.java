@@ -1,0 +1,44 @@
+package robotworld.bus;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A reply that comes after its request timed out must never be taken for the reply to the next request to the same
+ * module, even when function code and length match: reading one bumper and reading all eight both answer
+ * {@code 02 01 xx}. Found as a wrong bumper mask in an integration test on a loaded machine.
+ */
+class LateReplyOverTcpTest {
+
+    /** Bumpers 4 and 6, the front ones, closed: the robot starts touching the wall at x = 2000. */
+    private static final int FRONT_BUMPERS = 1 << 3 | 1 << 5;
+
+    @Test
+    void aReplyAfterItsTimeoutIsNeverTakenForTheNextCallsAnswer() throws Exception {
+        String atTheWall = BusRig.FOUR_MODULES.replace("<Body x=\"500\"", "<Body x=\"1850\"");
+        try (BusRig rig = BusRig.tcp(atTheWall, BusRig.TIMING.withAttempts(1))) { // 50 ms, 1 attempt
+            BumperModuleProxy bumper = new BumperModuleProxy(rig.bus(), 2, "Bumper-Sensor");
+            assertEquals(FRONT_BUMPERS, bumper.getAllBumper());
+
+            rig.robot().faults(2).replyDelay(Duration.ofMillis(120));
+            assertThrows(BusTimeoutException.class, () -> bumper.getSingleBumper(4)); // its 02 01 01 comes late
+            Thread.sleep(40); // the late reply is due 30 ms into the next call's 50 ms
+            try {
+                assertEquals(FRONT_BUMPERS, bumper.getAllBumper(), "never the late single-bumper reply (1)");
+            } catch (BusTimeoutException stillSlow) {
+                // a clean timeout is right too: the module is still slower than the timeout
+            }
+
+            rig.robot().faults(2).replyDelay(Duration.ZERO);
+            assertEquals(FRONT_BUMPERS, bumper.getAllBumper(), "once the module is quick again");
+            assertEquals(FRONT_BUMPERS, bumper.getAllBumper());
+            BusStatistics statistics = rig.bus().statistics();
+            assertTrue(statistics.staleReplies() >= 1, "late replies are counted as stale: " + statistics);
+            assertEquals(0, statistics.strayFrames(), statistics.toString());
+        }
+    }
+}
