@@ -121,6 +121,37 @@ public final class EmbeddedSpace implements Capi {
         return containers.resolve(container).subscribe(operations, mode, timeout, listener);
     }
 
+    // ---- for servers that expose this space (not part of Capi) ----
+
+    /**
+     * A {@link #take} (or, with {@link Operation#DESTROY}, a {@link #destroy}) whose effect can be undone with
+     * {@link Removal#restore()}. A server uses it to acknowledge before losing: it keeps the removal until the
+     * client confirms receipt and restores the entries if the confirmation never comes.
+     *
+     * @param container the container
+     * @param operation {@link Operation#TAKE} or {@link Operation#DESTROY}
+     * @param timeout   how long to wait for enough entries
+     * @param selectors a selector chain; none means one entry in the base order
+     * @return the removal, already done
+     */
+    public Removal removeWithReceipt(ContainerRef container, Operation operation, Timeout timeout,
+                                     Selector... selectors) {
+        return containers.resolve(container).removeWithReceipt(operation, Objects.requireNonNull(timeout, "timeout"),
+                selectors);
+    }
+
+    /**
+     * The sequence number of the latest operation on a container, as carried by {@link Notification#sequence()}.
+     * A remote client compares it across a reconnection to learn whether it missed operations.
+     *
+     * @param container the container
+     * @return the latest sequence number (0 before the first operation)
+     * @throws ContainerNotFoundException if the container does not exist
+     */
+    public long sequence(ContainerRef container) {
+        return containers.resolve(Objects.requireNonNull(container, "container")).sequence();
+    }
+
     @Override
     public void close() {
         containers.close();

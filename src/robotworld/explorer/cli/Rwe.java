@@ -11,7 +11,7 @@ import picocli.CommandLine.Command;
 @Command(name = "rwe", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "RobotWorldExplorer: describe robots and environments, generate and run control frameworks.",
         subcommands = {ValidateCommand.class, ExploreCommand.class, GenerateCommand.class, SimulateCommand.class,
-                CommandLine.HelpCommand.class})
+                SpaceCommand.class, CommandLine.HelpCommand.class})
 public final class Rwe {
 
     public static void main(String[] args) {

@@ -19,6 +19,7 @@ import robotworld.space.Item;
 import robotworld.space.NotificationListener;
 import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
+import robotworld.space.Removal;
 import robotworld.space.Selector;
 import robotworld.space.SpaceClosedException;
 import robotworld.space.SpaceException;
@@ -77,6 +78,18 @@ public final class ContainerEngine {
         return result;
     }
 
+    /**
+     * take or destroy whose effect can be undone until the caller lets go of the {@link Removal}: a server uses
+     * it to put entries back when the client that asked for them never confirmed that it received them.
+     */
+    public Removal removeWithReceipt(Operation operation, Timeout timeout, Selector[] selectors) {
+        if (operation != Operation.TAKE && operation != Operation.DESTROY) {
+            throw new IllegalArgumentException("only take and destroy remove entries: " + operation);
+        }
+        Validation.checkSelectors(spec, selectors);
+        return (Removal) execute(timeout, true, () -> tryRemove(operation, selectors));
+    }
+
     public void write(Timeout timeout, List<Item> items) {
         Validation.checkWrite(spec, items);
         if (items.isEmpty()) {
@@ -110,6 +123,74 @@ public final class ContainerEngine {
         }
         published(operation, entries, List.of());
         return entries;
+    }
+
+    private Removal tryRemove(Operation operation, Selector[] selectors) {
+        List<Node> chosen = Selection.choose(store, spec.order(), selectors);
+        if (chosen == null) {
+            return null;
+        }
+        List<Entry> entries = entriesOf(chosen);
+        for (Node node : chosen) {
+            store.remove(node);
+        }
+        published(operation, entries, List.of());
+        return new UndoableRemoval(entries, List.copyOf(chosen));
+    }
+
+    /** Puts removed nodes back if they all fit now; announced as a write. Call under the lock. */
+    private boolean tryRestore(List<Node> nodes) {
+        if (!store.canRestore(nodes)) {
+            return false;
+        }
+        for (Node node : nodes) {
+            store.restore(node);
+        }
+        published(Operation.WRITE, entriesOf(nodes), List.of());
+        return true;
+    }
+
+    /** A removal that remembers its nodes (with their order stamps, key and position) so it can be undone. */
+    private final class UndoableRemoval implements Removal {
+        private final List<Entry> entries;
+        private final List<Node> nodes;
+        /** Guarded by the container's lock. */
+        private boolean restored;
+
+        UndoableRemoval(List<Entry> entries, List<Node> nodes) {
+            this.entries = entries;
+            this.nodes = nodes;
+        }
+
+        @Override
+        public List<Entry> entries() {
+            return entries;
+        }
+
+        @Override
+        public void restore() {
+            lock.lock();
+            try {
+                if (restored || nodes.isEmpty()) {
+                    return;
+                }
+                restored = true;
+                if (gone != null) {
+                    return; // the entries went with their container
+                }
+                if (tryRestore(nodes)) {
+                    if (!waiters.isEmpty()) {
+                        serveWaiters();
+                    }
+                } else {
+                    // nobody waits for this thread-less waiter: it is served first once the entries fit again
+                    waiters.addFirst(new Waiter(() -> tryRestore(nodes) ? Boolean.TRUE : null, true,
+                            lock.newCondition()));
+                }
+            } finally {
+                lock.unlock();
+            }
+        }
     }
 
     private Object tryWrite(List<Item> items) {
@@ -294,6 +375,17 @@ public final class ContainerEngine {
     private void failIfGone() {
         if (gone != null) {
             throw gone.get();
+        }
+    }
+
+    /** The number of the latest operation on this container (see {@link robotworld.space.Notification#sequence}). */
+    public long sequence() {
+        lock.lock();
+        try {
+            failIfGone();
+            return sequence;
+        } finally {
+            lock.unlock();
         }
     }
 

@@ -24,6 +24,12 @@ public final class ContainerRegistry {
     private final Map<String, ContainerEngine> byId = new ConcurrentHashMap<>();
     private final Map<String, ContainerEngine> byName = new ConcurrentHashMap<>();
     private final AtomicLong lastId = new AtomicLong();
+    /**
+     * Distinguishes this space instance's ids from those of any other, including a fresh space that replaced this
+     * one after a restart: a cref kept across the restart then fails with ContainerNotFoundException instead of
+     * silently naming a newer container that happens to have the same number.
+     */
+    private final String instanceTag = Long.toString(new java.security.SecureRandom().nextLong() >>> 16, 36);
     private volatile boolean closed;
 
     /**
@@ -45,7 +51,7 @@ public final class ContainerRegistry {
             throw new ContainerNameTakenException("a container named '" + spec.name() + "' exists");
         }
         // ids are never reused, so a cref to a destroyed container never reaches a newer one
-        ContainerRef ref = new ContainerRef(space, "c" + lastId.incrementAndGet());
+        ContainerRef ref = new ContainerRef(space, "c" + lastId.incrementAndGet() + "-" + instanceTag);
         ContainerEngine engine = new ContainerEngine(ref, spec, delivery, queueCapacity);
         byId.put(ref.id(), engine);
         if (spec.name() != null) {

@@ -134,6 +134,41 @@ final class EntryStore {
         return node;
     }
 
+    /** Whether removed nodes could all go back now: room, and their keys, positions and (SET) values free. */
+    boolean canRestore(List<Node> nodes) {
+        if (nodes.size() > room()) {
+            return false;
+        }
+        for (Node node : nodes) {
+            if (node.key != null && keys.containsKey(node.key)) {
+                return false;
+            }
+            if (node.position >= 0 && vector.at(node.position) != null) {
+                return false;
+            }
+            if (values != null && values.containsKey(node.entry)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Puts a removed node back into its old place in every structure; the caller checked {@link #canRestore}. */
+    void restore(Node node) {
+        byInsertion.insertByStamp(node);
+        byUsage.insertByStamp(node);
+        pool.add(node);
+        if (node.key != null) {
+            keys.put(node.key, node);
+        }
+        if (node.position >= 0) {
+            vector.put(node.position, node);
+        }
+        if (values != null) {
+            values.put(node.entry, node);
+        }
+    }
+
     void remove(Node node) {
         byInsertion.unlink(node);
         byUsage.unlink(node);

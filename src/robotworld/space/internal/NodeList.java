@@ -51,6 +51,36 @@ final class NodeList {
         last = node;
     }
 
+    /**
+     * Inserts a node that was unlinked earlier back into its old place: after the last node with a smaller stamp
+     * ({@code written} or {@code used}, depending on the list). Walks from the back, where restored entries of
+     * LIFO and keyed containers usually belong; O(size) at worst, and only used to undo a removal.
+     */
+    void insertByStamp(Node node) {
+        long stamp = stamp(node);
+        Node before = last;
+        while (before != null && stamp(before) > stamp) {
+            before = previous(before);
+        }
+        Node after = before == null ? first : next(before);
+        setPrevious(node, before);
+        setNext(node, after);
+        if (before == null) {
+            first = node;
+        } else {
+            setNext(before, node);
+        }
+        if (after == null) {
+            last = node;
+        } else {
+            setPrevious(after, node);
+        }
+    }
+
+    private long stamp(Node node) {
+        return byUsage ? node.used : node.written;
+    }
+
     void unlink(Node node) {
         Node before = previous(node);
         Node after = next(node);

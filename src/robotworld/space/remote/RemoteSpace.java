@@ -1,0 +1,729 @@
+package robotworld.space.remote;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InterruptedIOException;
+import java.net.URI;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+
+import robotworld.space.Capi;
+import robotworld.space.ContainerInfo;
+import robotworld.space.ContainerRef;
+import robotworld.space.ContainerSpec;
+import robotworld.space.Entry;
+import robotworld.space.Item;
+import robotworld.space.NotificationListener;
+import robotworld.space.NotificationMode;
+import robotworld.space.Operation;
+import robotworld.space.Selector;
+import robotworld.space.SpaceClosedException;
+import robotworld.space.SpaceException;
+import robotworld.space.SpaceInterruptedException;
+import robotworld.space.SpaceRequestRejectedException;
+import robotworld.space.SpaceTimeoutException;
+import robotworld.space.SpaceUnavailableException;
+import robotworld.space.Subscription;
+import robotworld.space.SubscriptionEnd;
+import robotworld.space.Timeout;
+import robotworld.space.wire.CrefMapping;
+import robotworld.space.wire.WireContext;
+import robotworld.space.wire.WireError;
+import robotworld.space.wire.WireFormatException;
+import robotworld.space.wire.WireLimits;
+import robotworld.space.wire.WireWriter;
+
+/**
+ * A space on a {@code SpaceServer}, reached over HTTP, with the same interface and semantics as the embedded
+ * one.
+ *
+ * <pre>{@code
+ * try (Capi space = RemoteSpace.open(URI.create("http://127.0.0.1:9876/space"))) {
+ *     ContainerRef jobs = space.lookupOrCreateContainer(ContainerSpec.of(Order.FIFO).named("jobs"));
+ *     space.write(jobs, Timeout.TRY_ONCE, Tuple.of("host-a", 42));
+ * }
+ * }</pre>
+ *
+ * <p><b>Waiting.</b> A call waits on the server at most the server's maximum per request; a longer timeout is
+ * split into several requests, each read with a timeout a little longer than the server's wait. A call returns
+ * or fails within its timeout plus {@link Options#networkAllowanceMillis()} (the allowance alone for calls that
+ * do not wait), unless its timeout is infinite.
+ *
+ * <p><b>Failures</b> are the same exceptions as in-process, plus {@link SpaceUnavailableException} (naming the
+ * server) when the server cannot be reached in time, and {@link SpaceRequestRejectedException} when it refuses
+ * a request as such. Connection failures are retried until the call's deadline: a call that had no effect is
+ * simply repeated, a take whose answer was lost is cancelled (the server puts its entries back) and repeated, a
+ * write or shift whose answer was lost is asked about and repeated only if it did not happen.
+ *
+ * <p><b>Takes are confirmed.</b> The server keeps what a take (or destroy) removed until this client confirms it
+ * received the answer; confirmations ride on the next request, or go alone within a millisecond. If the
+ * confirmation never arrives, the server puts the entries back.
+ *
+ * <p><b>Interrupts.</b> Interrupting a thread that waits in a call cancels the call on the server; the call
+ * throws {@link SpaceInterruptedException} and had no effect (or, for a write that happened just before the
+ * cancel, returns normally with the interrupt flag set).
+ *
+ * <p><b>Notifications</b> arrive over one streaming HTTP response per client; if it breaks (server restart), the
+ * client reconnects and re-establishes every subscription. A subscription that may have missed an operation in
+ * between ends as {@link SubscriptionEnd#OVERFLOWED} instead of going on with a silent gap.
+ */
+public final class RemoteSpace implements Capi {
+
+    private static final int BACKOFF_FIRST_MILLIS = 5;
+    private static final int BACKOFF_MAX_MILLIS = 250;
+
+    private final Endpoint endpoint;
+    final Options options;
+    final WireContext wire;
+    final ConnectionPool pool;
+    private final AckQueue acks;
+    private final ScheduledExecutorService timer;
+    final ExecutorService delivery;
+    private final EventStream events;
+    /** Prefix of this client's call ids: 64 random bits, short enough to keep ack headers small. */
+    private final String clientId = Long.toHexString(new java.security.SecureRandom().nextLong());
+    private final AtomicLong lastCall = new AtomicLong();
+    /** Waiting calls in progress, by call id, so that close() can cancel them on the server. */
+    private final Map<String, Boolean> waitingCalls = new ConcurrentHashMap<>();
+    private volatile URI spaceUri;
+    volatile long serverMaxWaitMillis = 20_000;
+    private volatile boolean closed;
+
+    private RemoteSpace(URI url, Options options) {
+        this.endpoint = Endpoint.of(url, options.token());
+        this.options = options;
+        this.wire = WireContext.of(new WireLimits(Integer.MAX_VALUE - 64, 256, Integer.MAX_VALUE - 64,
+                Integer.MAX_VALUE, 1024, Integer.MAX_VALUE), CrefMapping.IDENTITY);
+        this.pool = new ConnectionPool(endpoint, options.connectTimeoutMillis(), options.maxIdleConnections());
+        this.timer = Executors.newSingleThreadScheduledExecutor(daemonThreads("space-client-timer"));
+        this.delivery = Executors.newCachedThreadPool(daemonThreads("space-client-notify"));
+        this.acks = new AckQueue(timer, options.ackDelayMicros(), this::sendAcks);
+        this.events = new EventStream(this);
+    }
+
+    /** Connects to the space at {@code url} (e.g. {@code http://127.0.0.1:9876/space}) with default options. */
+    public static RemoteSpace open(URI url) {
+        return open(url, Options.defaults());
+    }
+
+    /**
+     * Connects to the space at {@code url}: asks the server for its space URI and limits, retrying for up to
+     * the network allowance.
+     *
+     * @throws SpaceUnavailableException     if the server cannot be reached in time
+     * @throws SpaceRequestRejectedException if it refuses the client (e.g. 401 without the right token)
+     */
+    public static RemoteSpace open(URI url, Options options) {
+        RemoteSpace space = new RemoteSpace(url, options);
+        try {
+            space.hello();
+        } catch (RuntimeException e) {
+            space.close();
+            throw e;
+        }
+        return space;
+    }
+
+    /** The server's URL this client talks to. */
+    public URI url() {
+        return endpoint.url();
+    }
+
+    @Override
+    public URI spaceUri() {
+        return spaceUri;
+    }
+
+    // ---- naming service ----
+
+    @Override
+    public ContainerRef createContainer(ContainerSpec spec) {
+        Objects.requireNonNull(spec, "spec");
+        return call("create", null, Retry.UNSAFE, (out, id, timeout) -> out.spec("spec", spec)).container;
+    }
+
+    @Override
+    public ContainerRef lookupContainer(String name) {
+        Objects.requireNonNull(name, "name");
+        return call("lookup", null, Retry.IDEMPOTENT, (out, id, timeout) -> out.field("name", name)).container;
+    }
+
+    @Override
+    public ContainerRef lookupOrCreateContainer(ContainerSpec spec) {
+        Objects.requireNonNull(spec, "spec");
+        if (spec.name() == null) {
+            throw new IllegalArgumentException("lookup-or-create needs a named spec");
+        }
+        return call("lookupOrCreate", null, Retry.IDEMPOTENT, (out, id, timeout) -> out.spec("spec", spec)).container;
+    }
+
+    @Override
+    public void destroyContainer(ContainerRef container) {
+        Objects.requireNonNull(container, "container");
+        call("destroyContainer", null, Retry.UNSAFE, (out, id, timeout) -> out.cref("container", container));
+    }
+
+    @Override
+    public ContainerInfo describeContainer(ContainerRef container) {
+        Objects.requireNonNull(container, "container");
+        Answer answer = call("describe", null, Retry.IDEMPOTENT, (out, id, timeout) -> out.cref("container", container));
+        return new ContainerInfo(answer.container, answer.spec, (int) answer.size, (int) answer.blocked,
+                (int) answer.subscriptions);
+    }
+
+    // ---- operations ----
+
+    @Override
+    public List<Entry> read(ContainerRef container, Timeout timeout, Selector... selectors) {
+        return retrieve("read", Retry.IDEMPOTENT, container, timeout, selectors).entries;
+    }
+
+    @Override
+    public List<Entry> take(ContainerRef container, Timeout timeout, Selector... selectors) {
+        return retrieve("take", Retry.REMOVAL, container, timeout, selectors).entries;
+    }
+
+    @Override
+    public int destroy(ContainerRef container, Timeout timeout, Selector... selectors) {
+        return (int) retrieve("destroy", Retry.REMOVAL, container, timeout, selectors).count;
+    }
+
+    private Answer retrieve(String operation, Retry retry, ContainerRef container, Timeout timeout,
+                            Selector[] selectors) {
+        Objects.requireNonNull(container, "container");
+        Objects.requireNonNull(timeout, "timeout");
+        for (Selector selector : selectors) {
+            Objects.requireNonNull(selector, "selector");
+        }
+        return call(operation, timeout, retry, (out, id, wait) -> {
+            out.cref("container", container).field("timeout", wait.millis()).selectors(selectors);
+            if (id != null) {
+                out.field("call", id);
+            }
+        });
+    }
+
+    @Override
+    public void write(ContainerRef container, Timeout timeout, List<Item> items) {
+        Objects.requireNonNull(container, "container");
+        Objects.requireNonNull(timeout, "timeout");
+        items.forEach(item -> Objects.requireNonNull(item, "item"));
+        call("write", timeout, Retry.WRITE, (out, id, wait) -> {
+            out.cref("container", container).field("timeout", wait.millis()).items(items);
+            if (id != null) {
+                out.field("call", id);
+            }
+        });
+    }
+
+    @Override
+    public List<Entry> shift(ContainerRef container, Timeout timeout, List<Item> items) {
+        Objects.requireNonNull(container, "container");
+        Objects.requireNonNull(timeout, "timeout");
+        items.forEach(item -> Objects.requireNonNull(item, "item"));
+        return call("shift", Timeout.TRY_ONCE, Retry.WRITE, (out, id, wait) -> out.cref("container", container)
+                .field("timeout", timeout.millis()).items(items).field("call", id)).displaced;
+    }
+
+    // ---- notifications ----
+
+    @Override
+    public Subscription subscribe(ContainerRef container, Set<Operation> operations, NotificationMode mode,
+                                  Timeout timeout, NotificationListener listener) {
+        Objects.requireNonNull(container, "container");
+        Objects.requireNonNull(operations, "operations");
+        Objects.requireNonNull(mode, "mode");
+        Objects.requireNonNull(timeout, "timeout");
+        Objects.requireNonNull(listener, "listener");
+        ensureOpen();
+        RemoteSubscription subscription = new RemoteSubscription(container, operations, mode, timeout, listener,
+                options.notificationQueue(), delivery, this::cancelOnServer);
+        events.subscribe(subscription, System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
+        return subscription;
+    }
+
+    /** Establishes {@code subscription} on the stream {@code session}; the answer has the server's id and sequence. */
+    Answer subscribeOnServer(String session, RemoteSubscription subscription, Timeout timeout) {
+        return call("subscribe", null, Retry.IDEMPOTENT, (out, id, wait) -> out.field("session", session)
+                .cref("container", subscription.container).operations(subscription.operations)
+                .field("mode", robotworld.space.wire.Wire.name(subscription.mode)).field("timeout", timeout.millis()));
+    }
+
+    private void cancelOnServer(RemoteSubscription subscription) {
+        String session = events.sessionId();
+        String serverId = subscription.serverId;
+        if (subscription.session == null || serverId == null || closed) {
+            subscription.end(SubscriptionEnd.CANCELLED); // not established now: nothing can arrive any more
+            events.forget(subscription);
+            return;
+        }
+        try {
+            call("unsubscribe", null, Retry.IDEMPOTENT, (out, id, wait) -> out.field("session", session)
+                    .field("subscription", serverId));
+        } catch (SpaceException e) {
+            subscription.end(SubscriptionEnd.CANCELLED);
+            events.forget(subscription);
+        }
+    }
+
+    // ---- lifecycle ----
+
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        pool.close(); // breaks the waits of calls in progress: they throw SpaceClosedException
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(Math.min(options.networkAllowanceMillis(), 1000));
+        String pending;
+        while ((pending = acks.drain()) != null && System.nanoTime() < deadline) {
+            exchangeQuietly("ack", pending, null, deadline); // confirm received takes, or they come back
+        }
+        for (String callId : waitingCalls.keySet()) {
+            exchangeQuietly("cancel", null, callId, deadline); // do not leave our waits behind on the server
+        }
+        if (events.started()) {
+            // end the notification session now rather than after the server's grace period
+            postQuietly("endSession", encode((out, id, wait) -> out.field("session", events.sessionId()), null,
+                    Timeout.TRY_ONCE), null, deadline);
+        }
+        events.close();
+        timer.shutdownNow();
+        delivery.shutdown();
+    }
+
+    boolean isClosed() {
+        return closed;
+    }
+
+    private void ensureOpen() {
+        if (closed) {
+            throw new SpaceClosedException("the remote space " + endpoint.url() + " is closed");
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "RemoteSpace[" + endpoint.url() + "]";
+    }
+
+    // ---- calls ----
+
+    /** How a call may be repeated after the connection broke before its answer arrived. */
+    enum Retry {
+        /** Repeating does no harm. */
+        IDEMPOTENT,
+        /** take/destroy: cancel the lost call (its entries go back), then repeat. */
+        REMOVAL,
+        /** write and shift: ask whether the lost call happened; repeat only if it did not. */
+        WRITE,
+        /** The outcome cannot be learned: fail with {@link SpaceUnavailableException}. */
+        UNSAFE
+    }
+
+    /** Writes a request body's fields (inside the object) for a call id and the timeout left. */
+    @FunctionalInterface
+    interface Body {
+        void write(WireWriter out, String callId, Timeout wait);
+    }
+
+    /**
+     * One call with its retries.
+     *
+     * @param timeout the operation's timeout, or null for calls that do not wait
+     */
+    Answer call(String operation, Timeout timeout, Retry retry, Body body) {
+        ensureOpen();
+        long start = System.nanoTime();
+        boolean waits = timeout != null && !timeout.isTryOnce();
+        boolean infinite = timeout != null && timeout.isInfinite();
+        long allowance = TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
+        long operationDeadline = timeout == null || infinite ? start : start + TimeUnit.MILLISECONDS.toNanos(timeout.millis());
+        long networkDeadline = operationDeadline + allowance;
+        boolean needsId = retry == Retry.REMOVAL || retry == Retry.WRITE || waits;
+        Exception lastFailure = null;
+        int attempt = 0;
+        while (true) {
+            ensureOpen();
+            long now = System.nanoTime();
+            Timeout wait = timeout == null ? Timeout.TRY_ONCE : infinite ? Timeout.INFINITE
+                    : Timeout.ofMillis(Math.max(0, TimeUnit.NANOSECONDS.toMillis(operationDeadline - now)));
+            String callId = needsId ? clientId + ":" + lastCall.incrementAndGet() : null;
+            byte[] request = encode(body, callId, wait);
+            long serverWait = wait.isInfinite() ? serverMaxWaitMillis : Math.min(wait.millis(), serverMaxWaitMillis);
+            long readDeadline = now + TimeUnit.MILLISECONDS.toNanos(serverWait) + allowance;
+            HttpConnection connection = null;
+            boolean sent = false;
+            String ackHeader = acks.drain();
+            if (waits) {
+                waitingCalls.put(callId, Boolean.TRUE);
+            }
+            try {
+                connection = pool.borrow();
+                connection.send("POST", endpoint.path(operation), headers(ackHeader), request, request.length);
+                sent = true;
+                HttpConnection.Response response = connection.receive(readDeadline, waits ? RemoteSpace::checkInterrupt
+                        : () -> { });
+                pool.release(connection);
+                Answer answer = parseAnswer(response);
+                if (answer.error != null) {
+                    WireError kind = WireError.byKind(answer.error);
+                    if (kind == WireError.STOPPING || kind == WireError.BUSY) {
+                        lastFailure = new SpaceUnavailableException(endpoint.url(), answer.message, null);
+                        pool.discardIdle();
+                    } else {
+                        throw failure(response.status(), kind, answer);
+                    }
+                } else if (answer.more) {
+                    if (!infinite && System.nanoTime() - operationDeadline >= 0) {
+                        throw new SpaceTimeoutException("timed out after " + timeout + " on " + operation);
+                    }
+                    attempt = 0;
+                    continue; // the server's wait ran out before ours: ask again
+                } else {
+                    if (answer.ack) {
+                        acks.add(callId);
+                    }
+                    return answer;
+                }
+            } catch (InterruptedIOException interrupt) {
+                pool.discard(connection);
+                acks.requeue(ackHeader);
+                return interrupted(operation, callId, retry);
+            } catch (IOException e) {
+                if (connection != null) {
+                    pool.discard(connection);
+                }
+                acks.requeue(ackHeader);
+                if (closed) {
+                    if (waits) {
+                        exchangeQuietly("cancel", null, callId, System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(200));
+                    }
+                    throw new SpaceClosedException("the remote space " + endpoint.url() + " was closed during "
+                            + operation);
+                }
+                // a keep-alive connection the server closed while idle fails like this too; only calls whose
+                // outcome cannot be asked about rely on that guess
+                boolean stale = connection != null && connection.reused && !connection.hasBufferedInput();
+                pool.discardIdle(); // a broken connection usually means they are all broken (server restart)
+                if (sent && (retry == Retry.REMOVAL || retry == Retry.WRITE || !stale)) {
+                    Answer settled = settleLostCall(operation, callId, retry, networkDeadline, e);
+                    if (settled != null) {
+                        return settled;
+                    }
+                }
+                if (stale) {
+                    attempt = 0; // a keep-alive connection the server had closed: retry at once
+                }
+                lastFailure = e;
+            } finally {
+                if (waits) {
+                    waitingCalls.remove(callId);
+                }
+            }
+            if (!infinite && System.nanoTime() - networkDeadline >= 0) {
+                throw new SpaceUnavailableException(endpoint.url(), "cannot reach the space server for " + operation,
+                        lastFailure);
+            }
+            backOff(attempt++, waits, infinite ? Long.MAX_VALUE : networkDeadline);
+        }
+    }
+
+    /** After the connection broke with the request sent: makes a repeat safe, or gives up. */
+    private Answer settleLostCall(String operation, String callId, Retry retry, long deadline, IOException cause) {
+        switch (retry) {
+            case IDEMPOTENT:
+                return null;
+            case REMOVAL:
+                exchangeQuietly("cancel", null, callId, Math.min(deadline, System.nanoTime()
+                        + TimeUnit.MILLISECONDS.toNanos(200))); // if it happened, its entries go back
+                return null;
+            case WRITE:
+                Answer outcome = cancelUntil(callId, deadline);
+                if (outcome != null && "completed".equals(outcome.outcome)) {
+                    return outcome; // it happened (for a shift, with what it displaced)
+                }
+                if (outcome == null) {
+                    throw new SpaceUnavailableException(endpoint.url(), operation
+                            + ": the connection broke before the answer, and whether it happened is unknown", cause);
+                }
+                return null;
+            default:
+                throw new SpaceUnavailableException(endpoint.url(), operation
+                        + ": the connection broke before the answer, so whether it happened is unknown", cause);
+        }
+    }
+
+    /** The waiting thread was interrupted: cancel on the server, then report. */
+    private Answer interrupted(String operation, String callId, Retry retry) {
+        Thread.interrupted(); // talk to the server undisturbed; the flag is set again below
+        try {
+            Answer outcome = exchangeQuietly("cancel", null, callId, System.nanoTime()
+                    + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
+            if (retry == Retry.WRITE && outcome != null && "completed".equals(outcome.outcome)) {
+                return outcome; // it happened: hand that over rather than pretend it did not
+            }
+            throw new SpaceInterruptedException("interrupted while waiting in " + operation + " on " + endpoint.url(),
+                    new InterruptedException());
+        } finally {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private Answer cancelUntil(String callId, long deadline) {
+        int attempt = 0;
+        while (System.nanoTime() - deadline < 0) {
+            Answer outcome = exchangeQuietly("cancel", null, callId, deadline);
+            if (outcome != null) {
+                return outcome;
+            }
+            backOff(attempt++, false, deadline);
+        }
+        return null;
+    }
+
+    /** One exchange without retries, for acks and cancels (also after close): the answer, or null on failure. */
+    private Answer exchangeQuietly(String operation, String ackHeader, String callId, long deadline) {
+        byte[] request = callId == null ? "{}".getBytes(java.nio.charset.StandardCharsets.US_ASCII)
+                : encode((out, id, wait) -> out.field("call", callId), null, Timeout.TRY_ONCE);
+        return postQuietly(operation, request, ackHeader, deadline);
+    }
+
+    private Answer postQuietly(String operation, byte[] request, String ackHeader, long deadline) {
+        HttpConnection connection = null;
+        try {
+            connection = new HttpConnection(endpoint.host(), endpoint.port(), options.connectTimeoutMillis());
+            connection.send("POST", endpoint.path(operation), headers(ackHeader), request, request.length);
+            HttpConnection.Response response = connection.receive(Math.max(deadline,
+                    System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(100)), () -> { });
+            if (response.status() != 200) {
+                return null;
+            }
+            return parseAnswer(response);
+        } catch (IOException | SpaceException e) {
+            return null;
+        } finally {
+            if (connection != null) {
+                connection.close();
+            }
+        }
+    }
+
+    private boolean sendAcks(String header) {
+        if (closed) {
+            return true; // close() sends what is left
+        }
+        HttpConnection connection = null;
+        try {
+            connection = pool.borrow();
+            byte[] body = {'{', '}'};
+            connection.send("POST", endpoint.path("ack"), headers(header), body, body.length);
+            HttpConnection.Response response = connection.receive(System.nanoTime()
+                    + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()), () -> { });
+            pool.release(connection);
+            return response.status() == 200;
+        } catch (IOException e) {
+            if (connection != null) {
+                pool.discard(connection);
+            }
+            return false;
+        }
+    }
+
+    private void hello() {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
+        Exception lastFailure = null;
+        int attempt = 0;
+        while (true) {
+            HttpConnection connection = null;
+            try {
+                connection = pool.borrow();
+                connection.send("GET", endpoint.basePath(), endpoint.authorization(), null, 0);
+                HttpConnection.Response response = connection.receive(deadline, () -> { });
+                pool.release(connection);
+                Answer answer = parseAnswer(response);
+                if (answer.error != null) {
+                    throw failure(response.status(), WireError.byKind(answer.error), answer);
+                }
+                if (answer.space == null) {
+                    throw new WireFormatException("the server did not say which space it serves");
+                }
+                spaceUri = URI.create(answer.space);
+                if (answer.maxWait > 0) {
+                    serverMaxWaitMillis = answer.maxWait;
+                }
+                return;
+            } catch (IOException e) {
+                if (connection != null) {
+                    pool.discard(connection);
+                }
+                lastFailure = e;
+            }
+            if (System.nanoTime() - deadline >= 0) {
+                throw new SpaceUnavailableException(endpoint.url(), "cannot reach the space server", lastFailure);
+            }
+            backOff(attempt++, false, deadline);
+        }
+    }
+
+    // ---- helpers ----
+
+    private String headers(String ackHeader) {
+        return ackHeader == null ? endpoint.authorization()
+                : endpoint.authorization() + robotworld.space.wire.Wire.ACK_HEADER + ": " + ackHeader + "\r\n";
+    }
+
+    private byte[] encode(Body body, String callId, Timeout wait) {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream(128);
+        try (WireWriter out = wire.writer(bytes)) {
+            out.startObject();
+            body.write(out, callId, wait);
+            out.endObject();
+        }
+        return bytes.toByteArray();
+    }
+
+    private Answer parseAnswer(HttpConnection.Response response) {
+        try {
+            return Answer.parse(wire, response.body());
+        } catch (WireFormatException e) {
+            if (response.status() != 200) {
+                // not one of our error bodies (e.g. the servlet container's own page)
+                throw new SpaceRequestRejectedException(response.status(), "the server refused the request with HTTP "
+                        + response.status());
+            }
+            throw e;
+        }
+    }
+
+    private SpaceException failure(int status, WireError kind, Answer answer) {
+        String message = answer.message == null ? answer.error : answer.message;
+        if (kind == WireError.NO_SESSION) {
+            return new SessionGoneException(message);
+        }
+        if (kind == null) {
+            return new SpaceRequestRejectedException(status, answer.error + ": " + message);
+        }
+        return kind.toException(message);
+    }
+
+    private static void checkInterrupt() throws InterruptedIOException {
+        if (Thread.currentThread().isInterrupted()) {
+            throw new InterruptedIOException("interrupted");
+        }
+    }
+
+    /** Waits before a retry: 5 ms, doubling to 250 ms, never past the deadline. */
+    private static void backOff(int attempt, boolean interruptible, long deadline) {
+        long millis = Math.min(BACKOFF_MAX_MILLIS, (long) BACKOFF_FIRST_MILLIS << Math.min(attempt, 10));
+        long left = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
+        millis = Math.max(1, Math.min(millis, left));
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            if (interruptible) {
+                throw new SpaceInterruptedException("interrupted while waiting for the space server", e);
+            }
+        }
+    }
+
+    static ThreadFactory daemonThreads(String prefix) {
+        AtomicInteger count = new AtomicInteger();
+        return task -> {
+            Thread thread = new Thread(task, prefix + "-" + count.incrementAndGet());
+            thread.setDaemon(true);
+            return thread;
+        };
+    }
+
+    Endpoint endpoint() {
+        return endpoint;
+    }
+
+    /** A subscription request named a stream that is gone; the caller waits for the new one and repeats. */
+    static final class SessionGoneException extends SpaceException {
+        SessionGoneException(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * How a client behaves. Start from {@link #defaults()}.
+     *
+     * @param token                  bearer token to send, or null
+     * @param networkAllowanceMillis how long past its timeout a call may take because of the network (and how long
+     *                               calls that do not wait keep retrying an unreachable server)
+     * @param connectTimeoutMillis   how long one connection attempt may take
+     * @param notificationQueue      undelivered notifications each subscription may queue before it overflows
+     * @param maxIdleConnections     keep-alive connections kept open for reuse
+     * @param ackDelayMicros         how long a take's confirmation may wait for another request to ride on
+     */
+    public record Options(String token, long networkAllowanceMillis, int connectTimeoutMillis, int notificationQueue,
+                          int maxIdleConnections, long ackDelayMicros) {
+
+        /** Validates the values. */
+        public Options {
+            if (networkAllowanceMillis < 1 || connectTimeoutMillis < 1 || notificationQueue < 1
+                    || maxIdleConnections < 0 || ackDelayMicros < 0) {
+                throw new IllegalArgumentException("client times and sizes must be positive");
+            }
+        }
+
+        /**
+         * No token, 3 s network allowance, 1 s connect timeout, 10 000 queued notifications, 32 idle connections,
+         * and take confirmations sent alone after 20 ms without another request (they usually ride on the next one;
+         * a shorter delay wakes a timer thread on every take, which costs more than it saves).
+         */
+        public static Options defaults() {
+            return new Options(null, 3_000, 1_000, 10_000, 32, 20_000);
+        }
+
+        /** With a bearer token. */
+        public Options token(String newToken) {
+            return new Options(newToken, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
+                    maxIdleConnections, ackDelayMicros);
+        }
+
+        /** With another network allowance. */
+        public Options networkAllowanceMillis(long millis) {
+            return new Options(token, millis, connectTimeoutMillis, notificationQueue, maxIdleConnections,
+                    ackDelayMicros);
+        }
+
+        /** With another per-subscription notification queue. */
+        public Options notificationQueue(int capacity) {
+            return new Options(token, networkAllowanceMillis, connectTimeoutMillis, capacity, maxIdleConnections,
+                    ackDelayMicros);
+        }
+
+        /** With another connect timeout. */
+        public Options connectTimeoutMillis(int millis) {
+            return new Options(token, networkAllowanceMillis, millis, notificationQueue, maxIdleConnections,
+                    ackDelayMicros);
+        }
+
+        /** With another number of idle keep-alive connections. */
+        public Options maxIdleConnections(int connections) {
+            return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue, connections,
+                    ackDelayMicros);
+        }
+
+        /** With another delay before a take's confirmation is sent on its own. */
+        public Options ackDelayMicros(long micros) {
+            return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
+                    maxIdleConnections, micros);
+        }
+    }
+}

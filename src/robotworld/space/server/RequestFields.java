@@ -1,0 +1,88 @@
+package robotworld.space.server;
+
+import java.util.List;
+import java.util.Set;
+
+import robotworld.space.ContainerRef;
+import robotworld.space.ContainerSpec;
+import robotworld.space.Item;
+import robotworld.space.NotificationMode;
+import robotworld.space.Operation;
+import robotworld.space.Selector;
+import robotworld.space.Timeout;
+import robotworld.space.wire.WireFormatException;
+import robotworld.space.wire.WireReader;
+
+/**
+ * The fields of one request body, parsed in one pass; each operation then takes the ones it needs and fails
+ * with a clear message when one is missing. Unknown fields are rejected.
+ */
+final class RequestFields {
+
+    /** Longest call, session or subscription id accepted. */
+    static final int MAX_ID_CHARS = 128;
+
+    ContainerRef container;
+    Timeout timeout;
+    Selector[] selectors = new Selector[0];
+    List<Item> items;
+    ContainerSpec spec;
+    String name;
+    String call;
+    String session;
+    String subscription;
+    Set<Operation> operations;
+    NotificationMode mode;
+    List<String> calls;
+
+    static RequestFields parse(WireReader in, int maxAcks) {
+        RequestFields fields = new RequestFields();
+        in.startObject();
+        String field;
+        while ((field = in.nextField()) != null) {
+            switch (field) {
+                case "container" -> fields.container = in.readCref();
+                case "timeout" -> fields.timeout = in.readTimeout();
+                case "selectors" -> fields.selectors = in.readSelectors();
+                case "items" -> fields.items = in.readItems();
+                case "spec" -> fields.spec = in.readSpec();
+                case "name" -> fields.name = in.readString("name");
+                case "call" -> fields.call = id(in.readString("call"), "call");
+                case "session" -> fields.session = id(in.readString("session"), "session");
+                case "subscription" -> fields.subscription = id(in.readString("subscription"), "subscription");
+                case "operations" -> fields.operations = in.readOperations();
+                case "mode" -> fields.mode = in.readMode();
+                case "calls" -> {
+                    fields.calls = in.readStrings("calls", maxAcks);
+                    fields.calls.forEach(id -> id(id, "calls"));
+                }
+                default -> throw in.unknownField(field);
+            }
+        }
+        in.end();
+        return fields;
+    }
+
+    /** Checks an id: 1..128 characters of letters, digits, '-', '_', '.', ':'. */
+    static String id(String value, String what) {
+        if (value.isEmpty() || value.length() > MAX_ID_CHARS) {
+            throw new WireFormatException(what + " id must have 1.." + MAX_ID_CHARS + " characters");
+        }
+        for (int i = 0; i < value.length(); i++) {
+            char c = value.charAt(i);
+            boolean ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')
+                    || c == '-' || c == '_' || c == '.' || c == ':';
+            if (!ok) {
+                throw new WireFormatException(what + " id may hold only letters, digits, '-', '_', '.', ':'");
+            }
+        }
+        return value;
+    }
+
+    <T> T required(T value, String what) {
+        if (value == null) {
+            throw new WireFormatException("this request needs '" + what + "'");
+        }
+        return value;
+    }
+}

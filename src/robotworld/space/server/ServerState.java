@@ -1,0 +1,37 @@
+package robotworld.space.server;
+
+import java.net.URI;
+import java.util.concurrent.Semaphore;
+
+import robotworld.space.EmbeddedSpace;
+import robotworld.space.wire.WireContext;
+
+/** What the servlet and the server share: the space, the wire context, the options and the call bookkeeping. */
+final class ServerState {
+
+    final EmbeddedSpace space;
+    final URI publicUri;
+    final WireContext wire;
+    final SpaceServer.Options options;
+    final BearerToken token;
+    final SpaceReceipts receipts;
+    final CallRegistry calls;
+    final LeaseTable leases;
+    final SessionRegistry sessions;
+    /** Bounds the calls that wait inside the space at once (each holds a servlet thread). */
+    final Semaphore waitingPermits;
+    volatile boolean stopping;
+
+    ServerState(EmbeddedSpace space, URI publicUri, WireContext wire, SpaceServer.Options options) {
+        this.space = space;
+        this.publicUri = publicUri;
+        this.wire = wire;
+        this.options = options;
+        this.token = options.token() == null ? null : new BearerToken(options.token());
+        this.receipts = SpaceReceipts.of(space);
+        this.calls = new CallRegistry(receipts);
+        this.leases = receipts.leases;
+        this.sessions = new SessionRegistry(options.maxSessions(), options.sessionQueue());
+        this.waitingPermits = new Semaphore(options.maxWaitingCalls());
+    }
+}

@@ -1,0 +1,400 @@
+package robotworld.space.remote;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.CyclicBarrier;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+
+import robotworld.space.Capi;
+import robotworld.space.ContainerRef;
+import robotworld.space.ContainerSpec;
+import robotworld.space.Entry;
+import robotworld.space.IntEntry;
+import robotworld.space.Item;
+import robotworld.space.NotificationMode;
+import robotworld.space.Operation;
+import robotworld.space.Order;
+import robotworld.space.Selector;
+import robotworld.space.Subscription;
+import robotworld.space.Timeout;
+import robotworld.space.Tuple;
+import robotworld.space.server.SpaceServer;
+
+/**
+ * Remote space latencies next to a raw TCP loopback round trip measured in the same run: a write+take cycle, the
+ * request/answer cycle of a remote module call, notification latency, one trivial request with this client and
+ * with {@code java.net.http.HttpClient}, and 50 concurrent clients. Each figure is the median over several
+ * timed runs (after warm-up) of that run's percentile; each run is paired with a TCP batch measured just before
+ * it, and the "x TCP" column is the median of those per-run ratios. Run with {@code ./antw bench-remote}.
+ */
+public final class RemoteSpaceBenchmark {
+
+    private static final int RUNS = Integer.getInteger("bench.runs", 5);
+    private static final int ROUND_TRIPS = Integer.getInteger("bench.roundTrips", 3_000);
+    private static final int CLIENTS = Integer.getInteger("bench.clients", 50);
+    private static final long CONCURRENT_MILLIS = Long.getLong("bench.concurrentMillis", 3_000);
+
+    private RemoteSpaceBenchmark() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        System.out.printf("remote space benchmark: %d runs, %d round trips per run, %d concurrent clients; %s, %d cores%n",
+                RUNS, ROUND_TRIPS, CLIENTS, System.getProperty("java.vm.version"),
+                Runtime.getRuntime().availableProcessors());
+        try (SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0));
+             EchoServer echo = new EchoServer()) {
+            URI uri = server.uri();
+            List<Row> rows = new ArrayList<>();
+            warmUp(uri, echo);
+            Row tcp = measure("raw TCP loopback round trip (16-byte echo)", echo, () -> tcpRoundTrips(echo));
+            rows.add(tcp);
+            rows.add(measure("remote write+take cycle (2 requests)", echo, () -> writeTakeCycles(uri)));
+            Row call = measure("request/answer cycle of a remote module call", echo, () -> requestAnswerCycles(uri));
+            rows.add(call);
+            rows.add(measure("notification latency (write call to listener)", echo, () -> notificationLatencies(uri)));
+            rows.add(measure("one trivial request (describe), this client", echo, () -> describeCalls(uri)));
+            rows.add(measure("one trivial request (describe), java.net.http.HttpClient", echo,
+                    () -> jdkHttpCalls(uri)));
+            print(rows);
+            System.out.printf("%nrequest/answer p50 = %.1f x the TCP round trip measured just before it, median of"
+                    + " %d runs (target <= 8); notification p50 = %.0f us (target <= 300)%n", call.ratio(), RUNS,
+                    rows.get(3).p50());
+            concurrentClients(uri);
+        }
+    }
+
+    // ---- scenarios: each returns the latency samples of one run, in nanoseconds ----
+
+    private static long[] tcpRoundTrips(EchoServer echo) throws IOException {
+        long[] samples = new long[ROUND_TRIPS * 4];
+        try (Socket socket = new Socket(InetAddress.getLoopbackAddress(), echo.port())) {
+            socket.setTcpNoDelay(true);
+            DataOutputStream out = new DataOutputStream(socket.getOutputStream());
+            DataInputStream in = new DataInputStream(socket.getInputStream());
+            byte[] message = new byte[16];
+            for (int i = 0; i < samples.length; i++) {
+                long start = System.nanoTime();
+                out.write(message);
+                out.flush();
+                in.readFully(message);
+                samples[i] = System.nanoTime() - start;
+            }
+        }
+        return samples;
+    }
+
+    private static long[] writeTakeCycles(URI uri) {
+        try (RemoteSpace space = RemoteSpace.open(uri)) {
+            ContainerRef queue = space.createContainer(ContainerSpec.of(Order.FIFO));
+            long[] samples = new long[ROUND_TRIPS];
+            for (int i = 0; i < samples.length; i++) {
+                long start = System.nanoTime();
+                space.write(queue, Timeout.TRY_ONCE, Entry.of(i));
+                space.take(queue, Timeout.TRY_ONCE);
+                samples[i] = System.nanoTime() - start;
+            }
+            space.destroyContainer(queue);
+            return samples;
+        }
+    }
+
+    /**
+     * Client A writes {@code <A, i>} to a FIFO REQUEST container; client B, blocked in a take, receives it and
+     * shifts the answer under A's key into a LIFO+KEY ANSWER container; A, blocked in a take of its key, receives it.
+     */
+    private static long[] requestAnswerCycles(URI uri) throws Exception {
+        try (RemoteSpace a = RemoteSpace.open(uri); RemoteSpace b = RemoteSpace.open(uri)) {
+            String suffix = Long.toString(System.nanoTime());
+            ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQUEST" + suffix));
+            ContainerRef answers = a.createContainer(ContainerSpec.of(Order.LIFO).withKeyView().named("ANSWER" + suffix));
+            Thread module = new Thread(() -> {
+                while (true) {
+                    Tuple request = (Tuple) b.take(requests, Timeout.INFINITE).get(0);
+                    if (request.arity() == 0) {
+                        return;
+                    }
+                    b.shift(answers, Timeout.TRY_ONCE, List.of(Item.keyed(request.stringAt(0),
+                            Tuple.of(request.longAt(1) + 1))));
+                }
+            }, "bench-module");
+            module.start();
+            long[] samples = new long[ROUND_TRIPS];
+            for (int i = 0; i < samples.length; i++) {
+                long start = System.nanoTime();
+                a.write(requests, Timeout.TRY_ONCE, Tuple.of("A", i));
+                Tuple answer = (Tuple) a.take(answers, Timeout.ofMillis(5_000), Selector.key("A")).get(0);
+                samples[i] = System.nanoTime() - start;
+                if (answer.longAt(0) != i + 1) {
+                    throw new IllegalStateException("wrong answer " + answer + " for " + i);
+                }
+            }
+            a.write(requests, Timeout.TRY_ONCE, Tuple.of());
+            module.join();
+            a.destroyContainer(requests);
+            a.destroyContainer(answers);
+            return samples;
+        }
+    }
+
+    private static long[] notificationLatencies(URI uri) throws Exception {
+        try (RemoteSpace writer = RemoteSpace.open(uri); RemoteSpace observer = RemoteSpace.open(uri)) {
+            ContainerRef observed = writer.createContainer(ContainerSpec.of(Order.FIFO).bounded(1));
+            long[] samples = new long[ROUND_TRIPS];
+            AtomicLong received = new AtomicLong(-1);
+            Object signal = new Object();
+            Subscription subscription = observer.subscribe(observed, EnumSet.of(Operation.SHIFT),
+                    NotificationMode.INFINITE, Timeout.INFINITE, notification -> {
+                        long sentAt = ((IntEntry) notification.entries().get(0)).value();
+                        synchronized (signal) {
+                            received.set(System.nanoTime() - sentAt);
+                            signal.notifyAll();
+                        }
+                    });
+            for (int i = 0; i < samples.length; i++) {
+                received.set(-1);
+                writer.shift(observed, Timeout.TRY_ONCE, Entry.of(System.nanoTime()));
+                synchronized (signal) {
+                    long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+                    while (received.get() < 0) {
+                        if (System.nanoTime() > deadline) {
+                            throw new IllegalStateException("notification " + i + " never came");
+                        }
+                        signal.wait(100);
+                    }
+                }
+                samples[i] = received.get();
+            }
+            subscription.cancel();
+            return samples;
+        }
+    }
+
+    private static long[] describeCalls(URI uri) {
+        try (RemoteSpace space = RemoteSpace.open(uri)) {
+            ContainerRef ref = space.createContainer(ContainerSpec.of(Order.FIFO));
+            long[] samples = new long[ROUND_TRIPS];
+            for (int i = 0; i < samples.length; i++) {
+                long start = System.nanoTime();
+                space.describeContainer(ref);
+                samples[i] = System.nanoTime() - start;
+            }
+            return samples;
+        }
+    }
+
+    private static long[] jdkHttpCalls(URI uri) throws Exception {
+        try (RemoteSpace space = RemoteSpace.open(uri)) {
+            ContainerRef ref = space.createContainer(ContainerSpec.of(Order.FIFO));
+            HttpClient client = HttpClient.newBuilder().version(HttpClient.Version.HTTP_1_1).build();
+            HttpRequest request = HttpRequest.newBuilder(URI.create(uri + "/describe"))
+                    .header("Content-Type", "application/json")
+                    .POST(HttpRequest.BodyPublishers.ofString("{\"container\":{\"cref\":\"" + ref.id()
+                            + "\",\"space\":\"" + ref.space() + "\"}}"))
+                    .build();
+            long[] samples = new long[ROUND_TRIPS];
+            for (int i = 0; i < samples.length; i++) {
+                long start = System.nanoTime();
+                HttpResponse<byte[]> response = client.send(request, HttpResponse.BodyHandlers.ofByteArray());
+                samples[i] = System.nanoTime() - start;
+                if (response.statusCode() != 200) {
+                    throw new IllegalStateException("HTTP " + response.statusCode());
+                }
+            }
+            return samples;
+        }
+    }
+
+    /** {@link #CLIENTS} clients, each with its own connection and container, doing write+take cycles at once. */
+    private static void concurrentClients(URI uri) throws Exception {
+        System.out.printf("%n%d concurrent clients, write+take cycles on their own containers, %d ms per run:%n",
+                CLIENTS, CONCURRENT_MILLIS);
+        List<RemoteSpace> clients = new ArrayList<>();
+        List<ContainerRef> queues = new ArrayList<>();
+        for (int c = 0; c < CLIENTS; c++) {
+            RemoteSpace client = RemoteSpace.open(uri);
+            clients.add(client);
+            queues.add(client.createContainer(ContainerSpec.of(Order.FIFO)));
+        }
+        List<Double> throughputs = new ArrayList<>();
+        List<Double> p50s = new ArrayList<>();
+        List<Double> p99s = new ArrayList<>();
+        for (int run = -1; run < 3; run++) { // run -1 warms up
+            long[][] perClient = new long[CLIENTS][];
+            CyclicBarrier start = new CyclicBarrier(CLIENTS + 1);
+            CountDownLatch done = new CountDownLatch(CLIENTS);
+            long[] stopAt = new long[1];
+            for (int c = 0; c < CLIENTS; c++) {
+                int index = c;
+                Thread worker = new Thread(() -> {
+                    long[] samples = new long[1 << 16];
+                    int count = 0;
+                    try {
+                        start.await();
+                        while (System.nanoTime() < stopAt[0] && count < samples.length) {
+                            long begin = System.nanoTime();
+                            clients.get(index).write(queues.get(index), Timeout.TRY_ONCE, Entry.of(count));
+                            clients.get(index).take(queues.get(index), Timeout.TRY_ONCE);
+                            samples[count++] = System.nanoTime() - begin;
+                        }
+                    } catch (Exception e) {
+                        e.printStackTrace();
+                    } finally {
+                        perClient[index] = Arrays.copyOf(samples, count);
+                        done.countDown();
+                    }
+                }, "bench-client-" + c);
+                worker.start();
+            }
+            stopAt[0] = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CONCURRENT_MILLIS);
+            long begin = System.nanoTime();
+            start.await();
+            done.await();
+            double seconds = (System.nanoTime() - begin) / 1e9;
+            long[] all = Arrays.stream(perClient).flatMapToLong(Arrays::stream).toArray();
+            Arrays.sort(all);
+            if (run >= 0) {
+                throughputs.add(all.length * 2 / seconds);
+                p50s.add(percentile(all, 0.50) / 1e3);
+                p99s.add(percentile(all, 0.99) / 1e3);
+                System.out.printf("  run %d: %,.0f operations/s (%,d cycles), cycle p50 %.0f us, p99 %.0f us%n", run + 1,
+                        all.length * 2 / seconds, all.length, percentile(all, 0.50) / 1e3, percentile(all, 0.99) / 1e3);
+            }
+        }
+        System.out.printf("  median: %,.0f operations/s, cycle p50 %.0f us, p99 %.0f us%n", median(throughputs),
+                median(p50s), median(p99s));
+        clients.forEach(Capi::close);
+    }
+
+    // ---- measuring ----
+
+    @FunctionalInterface
+    private interface Scenario {
+        long[] run() throws Exception;
+    }
+
+    /** A scenario's median p50 and p99, the median of its per-run ratios to the TCP p50, and the per-run values. */
+    private record Row(String name, double p50, double p99, double ratio, List<Double> runP50s, List<Double> tcpP50s) {
+    }
+
+    private static void warmUp(URI uri, EchoServer echo) throws Exception {
+        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.getLong("bench.warmupSeconds", 8));
+        while (System.nanoTime() < until) {
+            tcpRoundTrips(echo);
+            writeTakeCycles(uri);
+            requestAnswerCycles(uri);
+            notificationLatencies(uri);
+        }
+    }
+
+    /**
+     * Runs a scenario {@link #RUNS} times, each right after a batch of TCP round trips, so that each ratio compares
+     * figures taken under the same conditions (the echo's own latency varies between runs on a virtual machine).
+     */
+    private static Row measure(String name, EchoServer echo, Scenario scenario) throws Exception {
+        List<Double> p50s = new ArrayList<>();
+        List<Double> p99s = new ArrayList<>();
+        List<Double> tcpP50s = new ArrayList<>();
+        List<Double> ratios = new ArrayList<>();
+        for (int run = 0; run < RUNS; run++) {
+            long[] tcp = tcpRoundTrips(echo);
+            Arrays.sort(tcp);
+            long[] samples = scenario.run();
+            Arrays.sort(samples);
+            double tcpP50 = percentile(tcp, 0.50) / 1e3;
+            double p50 = percentile(samples, 0.50) / 1e3;
+            tcpP50s.add(tcpP50);
+            p50s.add(p50);
+            p99s.add(percentile(samples, 0.99) / 1e3);
+            ratios.add(p50 / tcpP50);
+        }
+        return new Row(name, median(p50s), median(p99s), median(ratios), p50s, tcpP50s);
+    }
+
+    private static void print(List<Row> rows) {
+        System.out.printf("%n%-58s %8s %8s %7s   %s%n", "scenario", "p50 us", "p99 us", "x TCP",
+                "per run: p50 us / TCP p50 just before");
+        for (Row row : rows) {
+            StringBuilder runs = new StringBuilder();
+            for (int i = 0; i < row.runP50s().size(); i++) {
+                runs.append(String.format("%.0f/%.0f ", row.runP50s().get(i), row.tcpP50s().get(i)));
+            }
+            System.out.printf("%-58s %8.1f %8.1f %7.1f   %s%n", row.name(), row.p50(), row.p99(), row.ratio(),
+                    runs.toString().trim());
+        }
+    }
+
+    private static double percentile(long[] sorted, double fraction) {
+        if (sorted.length == 0) {
+            return Double.NaN;
+        }
+        return sorted[Math.min(sorted.length - 1, (int) Math.floor(fraction * sorted.length))];
+    }
+
+    private static double median(List<Double> values) {
+        List<Double> sorted = new ArrayList<>(values);
+        sorted.sort(Double::compare);
+        return sorted.get(sorted.size() / 2);
+    }
+
+    /** A tiny blocking echo server: the raw round trip the HTTP figures are compared with. */
+    private static final class EchoServer implements AutoCloseable {
+        private final ServerSocket socket;
+
+        EchoServer() throws IOException {
+            socket = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
+            Thread acceptor = new Thread(() -> {
+                while (!socket.isClosed()) {
+                    try {
+                        Socket connection = socket.accept();
+                        connection.setTcpNoDelay(true);
+                        Thread echo = new Thread(() -> echo(connection), "bench-echo");
+                        echo.setDaemon(true);
+                        echo.start();
+                    } catch (IOException closed) {
+                        return;
+                    }
+                }
+            }, "bench-echo-accept");
+            acceptor.setDaemon(true);
+            acceptor.start();
+        }
+
+        private static void echo(Socket connection) {
+            try (connection) {
+                byte[] buffer = new byte[16];
+                DataInputStream in = new DataInputStream(connection.getInputStream());
+                var out = connection.getOutputStream();
+                while (true) {
+                    in.readFully(buffer);
+                    out.write(buffer);
+                    out.flush();
+                }
+            } catch (IOException done) {
+                // client finished
+            }
+        }
+
+        int port() {
+            return socket.getLocalPort();
+        }
+
+        @Override
+        public void close() throws IOException {
+            socket.close();
+        }
+    }
+}
