@@ -1,0 +1,143 @@
+package robotworld.xvsm;
+
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import robotworld.space.Capi;
+import robotworld.space.Entry;
+import robotworld.space.Selector;
+import robotworld.space.SpaceException;
+import robotworld.space.SpaceInterruptedException;
+import robotworld.space.SpaceTimeoutException;
+import robotworld.space.Template;
+import robotworld.space.Timeout;
+import robotworld.space.Tuple;
+
+/**
+ * One remote call: write the request {@code <host#call, args..., function>} to REQUEST, take the answer under
+ * the same key from ANSWER, both within one deadline. The key is unique to this call (see
+ * {@link XVSMRuntime#nextCallKey()}), so the answer taken can only be this call's: never one meant for an
+ * earlier call that timed out, nor for another thread of the same host.
+ *
+ * <p>When the deadline passes, the request is withdrawn from the queue if it is still there (so a late module
+ * host does not carry out a command its caller gave up on); if it is already being served, the call is handed to
+ * {@link AbandonedCalls}, which takes the late answer away.
+ */
+final class RemoteCall {
+
+    private final XVSMRemoteModule module;
+    private final CallTuple request;
+    private final String function;
+    private final long timeoutMillis;
+
+    RemoteCall(XVSMRemoteModule module, CallTuple request, String function, long timeoutMillis) {
+        this.module = module;
+        this.request = request;
+        this.function = function;
+        this.timeoutMillis = timeoutMillis;
+    }
+
+    /** Runs the call; returns the answer, or throws what the answer or the missing answer means. */
+    CallTuple run() {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMillis);
+        ModuleContainers containers = module.containers;
+        Capi space = containers.space();
+        Tuple tuple = request.toTuple();
+        List<Entry> answer;
+        try {
+            containers.onRequests(requests -> {
+                space.write(requests, remaining(deadline), tuple);
+                return null;
+            });
+            answer = containers.onAnswers(answers -> space.take(answers, remaining(deadline),
+                    Selector.key(request.key())));
+        } catch (SpaceTimeoutException e) {
+            throw timedOut(tuple);
+        } catch (SpaceInterruptedException e) {
+            giveUp(tuple);
+            throw failure("the calling thread was interrupted", e);
+        } catch (SpaceException e) {
+            giveUp(tuple);
+            throw failure("the space failed: " + e.getMessage(), e);
+        }
+        return decode(answer.get(0));
+    }
+
+    /** Only writes the request (for quiet functions); within the call timeout. */
+    void send() {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMillis);
+        ModuleContainers containers = module.containers;
+        try {
+            containers.onRequests(requests -> {
+                containers.space().write(requests, remaining(deadline), request.toTuple());
+                return null;
+            });
+        } catch (SpaceInterruptedException e) {
+            throw failure("the calling thread was interrupted", e);
+        } catch (SpaceException e) {
+            throw failure("cannot send the request: " + e.getMessage(), e);
+        }
+    }
+
+    private CallTuple decode(Entry entry) {
+        CallTuple answer;
+        try {
+            answer = CallTuple.parse(entry);
+            if (ErrorAnswer.isError(answer)) {
+                throw ErrorAnswer.parse(answer).toException(module.participant(), module.moduleName(), function);
+            }
+        } catch (MalformedCallException e) {
+            throw failure("malformed answer: " + e.getMessage(), e);
+        }
+        if (!answer.key().equals(request.key()) || !answer.function().equals(request.function())) {
+            throw failure("the answer " + answer + " does not belong to the request " + request, null);
+        }
+        return answer;
+    }
+
+    private ModuleCallTimeoutException timedOut(Tuple tuple) {
+        boolean withdrawn = giveUp(tuple);
+        return new ModuleCallTimeoutException(module.participant(), module.moduleName(), function, timeoutMillis,
+                where() + ": no answer within " + timeoutMillis + " ms from the host serving it (asked from host "
+                        + module.hostName() + "); " + (withdrawn
+                        ? "the request was still queued and is withdrawn: is the module's program running?"
+                        : "the request was being served; its late answer will be discarded"));
+    }
+
+    private ModuleCallException failure(String why, Throwable cause) {
+        return new ModuleCallException(module.participant(), module.moduleName(), function,
+                where() + " (from host " + module.hostName() + "): " + why, cause);
+    }
+
+    /**
+     * Withdraws the request if it is still queued, else leaves the late answer to {@link AbandonedCalls}.
+     *
+     * @return whether the request was withdrawn
+     */
+    private boolean giveUp(Tuple tuple) {
+        boolean interrupted = Thread.interrupted(); // the clean-up must not fail for the caller's interrupt
+        try {
+            ModuleContainers containers = module.containers;
+            List<Entry> withdrawn = containers.onRequests(requests -> containers.space().take(requests,
+                    Timeout.TRY_ONCE, Selector.template(Template.value(tuple), Selector.ALL)));
+            if (!withdrawn.isEmpty()) {
+                return true;
+            }
+        } catch (SpaceException e) {
+            // unknown: let the sweeper look again
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        module.runtime().abandonedCalls().add(module.containers, request.key(), tuple);
+        return false;
+    }
+
+    private String where() {
+        return module.participant() + "/" + module.moduleName() + " " + function;
+    }
+
+    private static Timeout remaining(long deadline) {
+        return Timeout.ofMillis(Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+    }
+}

@@ -1,0 +1,198 @@
+package robotworld.xvsm;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.function.Supplier;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robotworld.space.Entry;
+
+/**
+ * The module proxy on the computer that has the hardware. It serves the module's REQUEST container with a thread
+ * of its own (blocking take, perform on the hardware, shift the answer under the requester's key), and lets the
+ * control program on this computer call the hardware directly; each such local call is published into the ANSWER
+ * container under this computer's host name, so monitors see it (switch off with
+ * {@link #setPublishLocalCalls(boolean)} to save the space traffic).
+ *
+ * <p>A failed hardware call is answered with an error answer, and the thread goes on serving. Sensor modules may
+ * batch: take every waiting request, read the hardware once, answer all ({@link #batchPerformer()}).
+ *
+ * <p>Subclasses map their interface onto tuples: each interface method calls {@link #callLocally}, and
+ * {@link #perform} carries out a request, for local and remote callers alike. A subclass constructor ends with
+ * {@link #start()}.
+ *
+ * @param <H> the module interface, implemented by the hardware proxy
+ */
+public abstract class XVSMLocalModule<H> extends XVSMModule {
+
+    private static final Logger LOG = LoggerFactory.getLogger(XVSMLocalModule.class);
+
+    /** Carries out one request and returns the answer's values (the fields between key and function). */
+    @FunctionalInterface
+    protected interface Performer {
+        /**
+         * @throws MalformedCallException for an unknown function or wrong fields; any other exception is a
+         *                                hardware failure
+         */
+        List<Entry> perform(CallTuple request);
+    }
+
+    private final H hardware;
+    private final RequestServer server;
+    private volatile boolean publishLocalCalls;
+    private volatile boolean adaptiveBatching;
+    private volatile boolean closed;
+
+    /**
+     * Looks up or creates the module's containers; {@link #start()} then starts serving.
+     *
+     * @param hardware the hardware proxy (not closed by this class)
+     */
+    protected XVSMLocalModule(XVSMRuntime runtime, String participant, String moduleName, H hardware) {
+        super(runtime, participant, moduleName);
+        this.hardware = Objects.requireNonNull(hardware, "hardware");
+        this.publishLocalCalls = runtime.publishLocalCallsByDefault();
+        this.server = new RequestServer(containers, participant + "/" + moduleName, this::answerAll,
+                () -> adaptiveBatching);
+    }
+
+    /** Starts serving requests; the last statement of a subclass's constructor. */
+    protected final void start() {
+        server.start();
+    }
+
+    /** The hardware proxy. */
+    protected final H hardware() {
+        return hardware;
+    }
+
+    /**
+     * Carries out one request (from a remote caller, or a local call) on the hardware.
+     *
+     * @return the answer's values
+     */
+    protected abstract List<Entry> perform(CallTuple request);
+
+    /**
+     * The performer for one batch of requests. The default performs each request on its own; sensor modules
+     * return one that reads the hardware at most once per kind of reading ({@link #readOnce}).
+     */
+    protected Performer batchPerformer() {
+        return this::perform;
+    }
+
+    /**
+     * A call of the control program on this computer: performed on the hardware in the caller's thread, then
+     * (unless switched off) published under this host's name; a failure is published as an error answer and
+     * thrown unchanged, as the hardware threw it.
+     *
+     * @param function the function name (or code)
+     * @param args     the arguments, converted with {@link Entry#from(Object)}
+     * @return the answer, for the subclass to read its value from
+     */
+    protected final CallTuple callLocally(Object function, Object... args) {
+        CallTuple request = CallTuple.of(hostName(), function, args);
+        CallTuple answer;
+        try {
+            answer = request.withFields(perform(request));
+        } catch (RuntimeException e) {
+            publish(ErrorAnswer.of(request, e, hostName()).toAnswer(hostName()));
+            throw e;
+        }
+        publish(answer);
+        return answer;
+    }
+
+    /** Whether local calls are published into the ANSWER container. */
+    public boolean isPublishLocalCalls() {
+        return publishLocalCalls;
+    }
+
+    /** Switches publishing of local calls on or off; off saves space traffic, but monitors only see remote calls. */
+    public void setPublishLocalCalls(boolean publish) {
+        publishLocalCalls = publish;
+    }
+
+    /** Whether the serving thread takes all waiting requests at once and answers them with {@link #batchPerformer()}. */
+    protected final boolean usesAdaptiveBatching() {
+        return adaptiveBatching;
+    }
+
+    /** Switches adaptive batching on or off (sensor modules offer it; see {@link XVSMSensorLocalModule}). */
+    protected final void useAdaptiveBatching(boolean on) {
+        adaptiveBatching = on;
+    }
+
+    /** Whether the serving thread runs. */
+    public boolean isServing() {
+        return server.isRunning();
+    }
+
+    /** Stops the serving thread after it has answered what it has taken; idempotent. The hardware stays open. */
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        if (server != null) { // null when the constructor failed after registering with the runtime
+            server.stop();
+        }
+    }
+
+    /**
+     * A reading that happens at most once, however often it is asked for; a failure is remembered and thrown to
+     * every asker. For {@link #batchPerformer()}.
+     */
+    protected static <T> Supplier<T> readOnce(Supplier<T> reading) {
+        return new Supplier<>() {
+            private T value;
+            private RuntimeException failure;
+            private boolean done;
+
+            @Override
+            public T get() {
+                if (!done) {
+                    done = true;
+                    try {
+                        value = reading.get();
+                    } catch (RuntimeException e) {
+                        failure = e;
+                    }
+                }
+                if (failure != null) {
+                    throw failure;
+                }
+                return value;
+            }
+        };
+    }
+
+    private void publish(CallTuple answer) {
+        if (publishLocalCalls) {
+            runtime().publisher().publish(containers, answer);
+        }
+    }
+
+    /** The answers to one batch taken by the serving thread; failures become error answers. */
+    private List<CallTuple> answerAll(List<CallTuple> requests) {
+        Performer performer = adaptiveBatching ? batchPerformer() : this::perform;
+        List<CallTuple> answers = new ArrayList<>(requests.size());
+        for (CallTuple request : requests) {
+            answers.add(answer(performer, request));
+        }
+        return answers;
+    }
+
+    private CallTuple answer(Performer performer, CallTuple request) {
+        try {
+            return request.withFields(performer.perform(request));
+        } catch (VirtualMachineError fatal) {
+            throw fatal;
+        } catch (Throwable failure) { // the thread must survive any failure of the hardware or its proxy
+            LOG.debug("{}/{} {} failed: {}", participant(), moduleName(), request.functionText(), failure.toString());
+            return ErrorAnswer.of(request, failure, hostName()).toAnswer(request.key());
+        }
+    }
+}

@@ -1,0 +1,47 @@
+package robotworld.xvsm;
+
+import static robotworld.xvsm.MotorTuples.SET_MOTOR;
+import static robotworld.xvsm.MotorTuples.SET_MOTOR_QUIET;
+
+import java.util.List;
+import robotworld.core.ModuleArguments;
+import robotworld.core.MotorModule;
+import robotworld.space.Entry;
+
+/**
+ * A motor module attached to this computer, shared through the space. Requests and answers:
+ * {@code <key, motorNr, speedPerMille, "setMotor"|"setMotorQuiet">}.
+ */
+public class XVSMMotorModuleLocal extends XVSMLocalModule<MotorModule> implements MotorModule {
+
+    /** Serves {@code <participant><moduleName>REQUEST} for {@code hardware} with a thread of its own. */
+    public XVSMMotorModuleLocal(XVSMRuntime runtime, String participant, String moduleName, MotorModule hardware) {
+        super(runtime, participant, moduleName, hardware);
+        start();
+    }
+
+    @Override
+    public void setMotor(int motor, double speed) {
+        callLocally(SET_MOTOR, ModuleArguments.motorNumber(motor), ModuleArguments.speedToPerMille(speed));
+    }
+
+    @Override
+    public void setMotorQuiet(int motor, double speed) {
+        callLocally(SET_MOTOR_QUIET, ModuleArguments.motorNumber(motor), ModuleArguments.speedToPerMille(speed));
+    }
+
+    @Override
+    protected List<Entry> perform(CallTuple request) {
+        request.expectFields(2);
+        int motor = request.intAt(0);
+        double speed = MotorTuples.speed(request.intAt(1));
+        if (request.is(SET_MOTOR)) {
+            hardware().setMotor(motor, speed);
+        } else if (request.is(SET_MOTOR_QUIET)) {
+            hardware().setMotorQuiet(motor, speed);
+        } else {
+            throw request.unknownFunction();
+        }
+        return request.fields();
+    }
+}

@@ -1,0 +1,63 @@
+package robotworld.xvsm;
+
+import static robotworld.xvsm.X10Tuples.BRIGHTEN;
+import static robotworld.xvsm.X10Tuples.DIM;
+import static robotworld.xvsm.X10Tuples.NO_LEVEL;
+import static robotworld.xvsm.X10Tuples.OFF;
+import static robotworld.xvsm.X10Tuples.ON;
+
+import java.util.List;
+import robotworld.core.X10LampModule;
+import robotworld.space.Entry;
+
+/**
+ * An X10 lamp module driven by this computer's CM11A, shared through the space. Requests and answers:
+ * {@code <key, level, "on"|"off"|"brighten"|"dim">}, level 0 for on and off.
+ */
+public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> implements X10LampModule {
+
+    /** Serves {@code <participant><moduleName>REQUEST} for {@code hardware} with a thread of its own. */
+    public XVSMX10LampModuleLocal(XVSMRuntime runtime, String participant, String moduleName,
+                                  X10LampModule hardware) {
+        super(runtime, participant, moduleName, hardware);
+        start();
+    }
+
+    @Override
+    public void brighten(int level) {
+        callLocally(BRIGHTEN, X10Tuples.level(level));
+    }
+
+    @Override
+    public void dim(int level) {
+        callLocally(DIM, X10Tuples.level(level));
+    }
+
+    @Override
+    public void on() {
+        callLocally(ON, NO_LEVEL);
+    }
+
+    @Override
+    public void off() {
+        callLocally(OFF, NO_LEVEL);
+    }
+
+    @Override
+    protected List<Entry> perform(CallTuple request) {
+        request.expectFields(1);
+        int level = request.intAt(0);
+        if (request.is(ON)) {
+            hardware().on();
+        } else if (request.is(OFF)) {
+            hardware().off();
+        } else if (request.is(BRIGHTEN)) {
+            hardware().brighten(level);
+        } else if (request.is(DIM)) {
+            hardware().dim(level);
+        } else {
+            throw request.unknownFunction();
+        }
+        return request.fields();
+    }
+}
