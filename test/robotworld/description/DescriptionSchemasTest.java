@@ -13,13 +13,13 @@ import org.junit.jupiter.api.io.TempDir;
 import robotworld.testsupport.ProjectFiles;
 
 /** Run-time schemas: how a new module type gets its {@code <Class>} value without rebuilding anything. */
-class DescriptionSchemasTest {
+public class DescriptionSchemasTest {
 
     @TempDir
     Path temp;
 
     /** A copy of schemas/ whose bus module classes also allow {@code newClass}. */
-    static Path schemasWithBusModuleClass(Path directory, String newClass) throws IOException {
+    public static Path schemasWithBusModuleClass(Path directory, String newClass) throws IOException {
         Files.createDirectories(directory);
         try (Stream<Path> files = Files.list(ProjectFiles.resolve("schemas"))) {
             for (Path file : files.toList()) {

@@ -53,10 +53,12 @@ public final class GeneratedProject {
     }
 
     /** Compiles src/ against lib/ with the JDK's compiler; returns the diagnostics, empty when it compiled. */
-    public String compile(Path classes) throws IOException {
+    public String compile(Path classes, Path... extraClassPath) throws IOException {
         JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
+        List<Path> classPath = new ArrayList<>(libraries());
+        classPath.addAll(List.of(extraClassPath));
         List<String> arguments = new ArrayList<>(List.of("-d", classes.toString(), "-encoding", "UTF-8",
-                "-Xlint:none", "-cp", libraries().stream().map(Path::toString)
+                "-Xlint:none", "-cp", classPath.stream().map(Path::toString)
                         .collect(Collectors.joining(java.io.File.pathSeparator))));
         sources().forEach(source -> arguments.add(source.toString()));
         ByteArrayOutputStream diagnostics = new ByteArrayOutputStream();
