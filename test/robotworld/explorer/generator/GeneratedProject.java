@@ -65,4 +65,20 @@ public final class GeneratedProject {
         int result = compiler.run(null, null, diagnostics, arguments.toArray(String[]::new));
         return result == 0 ? "" : "javac failed:\n" + diagnostics;
     }
+
+    /** Builds the project with its own build.xml and plain Ant ({@code ant compile}), as a user would. */
+    public void antCompile() throws IOException, InterruptedException {
+        String antHome = System.getProperty("rwe.ant.home");
+        String ant = antHome == null ? "ant" : Path.of(antHome, "bin", "ant").toString();
+        Path log = root.resolve("ant.log");
+        Process build = new ProcessBuilder(ant, "-q", "compile").directory(root.toFile())
+                .redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        if (!build.waitFor(180, java.util.concurrent.TimeUnit.SECONDS)) {
+            build.destroyForcibly();
+            throw new IllegalStateException("ant compile did not finish in " + root);
+        }
+        if (build.exitValue() != 0 || !Files.isDirectory(root.resolve("build/classes"))) {
+            throw new IllegalStateException("ant compile failed in " + root + ":\n" + Files.readString(log));
+        }
+    }
 }

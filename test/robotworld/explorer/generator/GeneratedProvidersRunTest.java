@@ -22,6 +22,7 @@ import robotworld.explorer.FrameworkGenerator;
 import robotworld.sim.Cm11aTiming;
 import robotworld.sim.SimulatedCm11a;
 import robotworld.sim.robot.SimMotorModule;
+import robotworld.sim.robot.SimServoModule;
 import robotworld.sim.robot.SimulatedRobot;
 import robotworld.space.server.SpaceServer;
 import robotworld.testsupport.ProjectFiles;
@@ -29,6 +30,8 @@ import robotworld.x10.X10Address;
 import robotworld.xvsm.XVSMBumperModuleRemote;
 import robotworld.xvsm.XVSMMotorModuleRemote;
 import robotworld.xvsm.XVSMRuntime;
+import robotworld.xvsm.XVSMServoModuleRemote;
+import robotworld.xvsm.XVSMX10LampModuleRemote;
 import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
 
 /**
@@ -38,6 +41,7 @@ import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
 class GeneratedProvidersRunTest {
 
     private static final Path CHAPTER5 = ProjectFiles.resolve("docs/examples/chapter5-world.xml");
+    private static final Path LAB = ProjectFiles.resolve("docs/examples/lab-world.xml");
     private static final Duration START_TIMEOUT = Duration.ofSeconds(60);
 
     @TempDir
@@ -100,15 +104,52 @@ class GeneratedProvidersRunTest {
         }
     }
 
+    @Test
+    void labProvidersServeTheirServosMotorsAndLamps() throws Exception {
+        Path labRobot = ProjectFiles.resolve("test/robotworld/explorer/generator/lab-robot.sim");
+        try (SpaceServer space = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200));
+             SimulatedCm11a cm11a = SimulatedCm11a.withDevices(Cm11aTiming.fast(), "B1=lamp,B2=appliance");
+             SimulatedRobot robot1 = SimulatedRobot.load(labRobot);
+             SimulatedRobot robot2 = SimulatedRobot.load(labRobot)) {
+            String spaceUrl = space.uri().toString();
+            FrameworkGenerator generator = new FrameworkGenerator();
+            Path lab = buildWithAnt(generator.generate(LAB, "OEFAI_Labor", null, temp.resolve("lab"), false,
+                    GenerationListener.SILENT));
+            Path one = buildWithAnt(generator.generate(LAB, "MyRobot1", null, temp.resolve("one"), false,
+                    GenerationListener.SILENT));
+            Path two = buildWithAnt(generator.generate(LAB, "MyRobot2", null, temp.resolve("two"), false,
+                    GenerationListener.SILENT));
+            start(lab, "MyWorld.OEFAI_Labor", "-Drwe.space.url=" + spaceUrl,
+                    "-Drwe.port.OEFAI_Labor.x10=" + cm11a.listen(0));
+            start(one, "MyWorld.MyRobot1", "-Drwe.space.url=" + spaceUrl,
+                    "-Drwe.port.MyRobot1.bus=" + robot1.serve("tcp://127.0.0.1:0"));
+            start(two, "MyWorld.MyRobot2", "-Drwe.space.url=" + spaceUrl,
+                    "-Drwe.port.MyRobot2.bus=" + robot2.serve("tcp://127.0.0.1:0"));
+
+            try (XVSMRuntime external = XVSMRuntime.connect(spaceUrl, "monitor-pc")) {
+                XVSMServoModuleRemote arm = external.own(new XVSMServoModuleRemote(external, "MyRobot1",
+                        "Servo-Controller"));
+                XVSMMotorModuleRemote drive = external.own(new XVSMMotorModuleRemote(external, "MyRobot2",
+                        "Motor-Controller"));
+                XVSMX10LampModuleRemote lamp = external.own(new XVSMX10LampModuleRemote(external, "OEFAI_Labor",
+                        "Ceiling-Lamp"));
+                arm.setCallTimeout(START_TIMEOUT);
+                drive.setCallTimeout(START_TIMEOUT);
+                lamp.setCallTimeout(START_TIMEOUT);
+
+                arm.setServo(1, 90); // returns once the servo reports it arrived
+                assertEquals(90.0, ((SimServoModule) robot1.module(1)).angle(1), 0.5);
+                drive.setMotor(2, -0.5);
+                assertEquals(-500, ((SimMotorModule) robot2.module(2)).setSpeed(2));
+                lamp.on();
+                assertTrue(cm11a.lamp(X10Address.of('B', 1)).isOn());
+            }
+        }
+    }
+
     /** Runs the project's own build.xml with plain Ant (compile), as a user would. */
     private static Path buildWithAnt(GenerationResult result) throws IOException, InterruptedException {
-        String antHome = System.getProperty("rwe.ant.home");
-        String ant = antHome == null ? "ant" : Path.of(antHome, "bin", "ant").toString();
-        Process build = new ProcessBuilder(ant, "-q", "compile").directory(result.destination().toFile())
-                .redirectErrorStream(true).redirectOutput(result.destination().resolve("ant.log").toFile()).start();
-        assertTrue(build.waitFor(120, TimeUnit.SECONDS), "ant compile did not finish");
-        assertEquals(0, build.exitValue(), () -> readQuietly(result.destination().resolve("ant.log")));
-        assertTrue(Files.isDirectory(result.destination().resolve("build/classes")));
+        new GeneratedProject(result.destination()).antCompile();
         return result.destination();
     }
 
@@ -120,13 +161,5 @@ class GeneratedProvidersRunTest {
                 + project.resolve("lib") + File.separator + "*", mainClass));
         providers.add(new ProcessBuilder(command).directory(project.toFile()).redirectErrorStream(true)
                 .redirectOutput(project.resolve("provider.log").toFile()).start());
-    }
-
-    private static String readQuietly(Path file) {
-        try {
-            return Files.readString(file);
-        } catch (IOException e) {
-            return "(no log)";
-        }
     }
 }
