@@ -23,18 +23,21 @@ class XvsmFrameworkTest {
     static final String LISTING_5_2 = """
             final int LEFT = 1;
             final int RIGHT = 2;
+            final long backOff = 500;
+            final long evaluate = 3 * backOff * 2;
+            final long turn = 2 * backOff;
             for (int round = 0; round < 1; round++) {
                 MotorModule1.setMotor(LEFT, 0.25);
                 MotorModule1.setMotor(RIGHT, 0.25);
                 if (BumperModule1.getSingleBumper(6) || BumperModule1.getSingleBumper(4)) {
                     MotorModule1.setMotor(LEFT, -0.3);
                     MotorModule1.setMotor(RIGHT, -0.3);
-                    Thread.sleep(500);
+                    Thread.sleep(backOff);
                     X10ApplianceModule1.on();
-                    Thread.sleep(3000);
+                    Thread.sleep(evaluate);
                     MotorModule1.setMotor(LEFT, 0.4);
                     MotorModule1.setMotor(RIGHT, -0.4);
-                    Thread.sleep(1000);
+                    Thread.sleep(turn);
                     X10ApplianceModule1.off();
                 }
             }
