@@ -24,6 +24,7 @@ public final class TestReportSummary {
     private int passed;
     private int failed;
     private int skipped;
+    private final java.util.Map<String, Integer> skipReasons = new java.util.TreeMap<>();
     private final List<String> failures = new ArrayList<>();
 
     public static void main(String[] args) throws Exception {
@@ -62,8 +63,13 @@ public final class TestReportSummary {
             if (problem != null) {
                 failed++;
                 failures.add(describe(name, problem));
-            } else if (firstChild(testCase, "skipped") != null) {
+            } else if (firstChild(testCase, "skipped") != null || firstChild(testCase, "aborted") != null) {
+                // "aborted" is how the legacy XML reports a failed assumption (e.g. GUI tests without a display)
                 skipped++;
+                Element aborted = firstChild(testCase, "aborted");
+                if (aborted != null && !aborted.getAttribute("message").isEmpty()) {
+                    skipReasons.merge(aborted.getAttribute("message"), 1, Integer::sum);
+                }
             } else {
                 passed++;
             }
@@ -97,6 +103,7 @@ public final class TestReportSummary {
 
     private void print() {
         failures.forEach(System.out::print);
+        skipReasons.forEach((reason, count) -> System.out.println("skipped " + count + ": " + reason));
         if (passed + failed == 0) {
             System.out.println("no test ran");
         }

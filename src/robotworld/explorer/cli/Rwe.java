@@ -1,18 +1,27 @@
 package robotworld.explorer.cli;
 
+import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
+import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
+import robotworld.explorer.RobotWorldExplorer;
 
 /**
  * The {@code rwe} command line: one verb per job, each a picocli subcommand class in this package.
- * Exit codes: 0 success, 1 the job failed (e.g. an invalid description), 2 wrong usage.
+ * Exit codes: 0 success, 1 the job failed (e.g. an invalid description), 2 wrong usage. Without a verb it opens
+ * the {@link RobotWorldExplorer} window on a desktop, and says that a verb is missing everywhere else.
  */
 @Command(name = "rwe", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "RobotWorldExplorer: describe robots and environments, generate and run control frameworks.",
         subcommands = {ValidateCommand.class, ExploreCommand.class, GenerateCommand.class, SimulateCommand.class,
-                SpaceCommand.class, CommandLine.HelpCommand.class})
-public final class Rwe {
+                SpaceCommand.class, MonitorCommand.class, CommandLine.HelpCommand.class})
+public final class Rwe implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
 
     public static void main(String[] args) {
         System.exit(run(args));
@@ -32,5 +41,17 @@ public final class Rwe {
             return 1;
         });
         return commandLine.execute(args);
+    }
+
+    /** No verb: the launcher on a desktop; otherwise the usage, as before, with exit code 2. */
+    @Override
+    public Integer call() throws InterruptedException {
+        if (!GraphicsEnvironment.isHeadless()) {
+            RobotWorldExplorer.showAndWait();
+            return 0;
+        }
+        spec.commandLine().getErr().println("Missing required subcommand");
+        spec.commandLine().usage(spec.commandLine().getErr());
+        return 2;
     }
 }

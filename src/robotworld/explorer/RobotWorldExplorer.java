@@ -1,0 +1,116 @@
+package robotworld.explorer;
+
+import java.awt.BorderLayout;
+import java.awt.GridLayout;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.nio.file.Path;
+import java.util.concurrent.CountDownLatch;
+import java.util.function.Supplier;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JFrame;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.SwingUtilities;
+import javax.swing.WindowConstants;
+import robotworld.explorer.frames.ExploreFrame;
+import robotworld.explorer.frames.GenerateFrame;
+import robotworld.explorer.frames.MonitorFrame;
+
+/**
+ * The RobotWorldExplorer launcher (thesis figure 4.1): a main window with three choices, explore a robot,
+ * generate a framework, monitor a world; each opens its own window. Start it with {@code ./antw run}, or
+ * {@code rwe} without a verb on a desktop.
+ */
+public final class RobotWorldExplorer extends JFrame {
+
+    /** The main window's title. */
+    public static final String TITLE = "RobotWorldExplorer";
+
+    private final Path home;
+    private final JButton explore;
+    private final JButton generate;
+    private final JButton monitor;
+
+    /** The main window; {@code home} holds {@code ModuleDescriptions/} and receives robot descriptions. */
+    public RobotWorldExplorer(Path home) {
+        super(TITLE);
+        this.home = home;
+        setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+        explore = choice("Explore a robot", 'E', () -> new ExploreFrame(this.home));
+        generate = choice("Generate a framework", 'G', GenerateFrame::new);
+        monitor = choice("Monitor a world", 'M', MonitorFrame::new);
+        JPanel buttons = new JPanel(new GridLayout(1, 3, 12, 0));
+        buttons.add(explore);
+        buttons.add(generate);
+        buttons.add(monitor);
+        JPanel content = new JPanel(new BorderLayout(0, 10));
+        content.setBorder(BorderFactory.createEmptyBorder(14, 14, 14, 14));
+        content.add(new JLabel("<html>Describe the robots and environments of a RobotWorld, generate a control"
+                + " framework for any of its computers,<br>and watch the modules at work.</html>"), BorderLayout.NORTH);
+        content.add(buttons, BorderLayout.CENTER);
+        setContentPane(content);
+        pack();
+        setLocationRelativeTo(null);
+    }
+
+    /** Starts the launcher; closing its main window ends the program. */
+    public static void main(String[] args) {
+        SwingUtilities.invokeLater(() -> {
+            RobotWorldExplorer launcher = new RobotWorldExplorer(defaultHome());
+            launcher.setDefaultCloseOperation(WindowConstants.EXIT_ON_CLOSE);
+            launcher.setVisible(true);
+        });
+    }
+
+    /**
+     * Shows the launcher and waits until its main window is closed (for the {@code rwe} command line, which
+     * exits afterwards).
+     */
+    public static void showAndWait() throws InterruptedException {
+        CountDownLatch closed = new CountDownLatch(1);
+        SwingUtilities.invokeLater(() -> {
+            RobotWorldExplorer launcher = new RobotWorldExplorer(defaultHome());
+            launcher.addWindowListener(new WindowAdapter() {
+                @Override
+                public void windowClosed(WindowEvent event) {
+                    closed.countDown();
+                }
+            });
+            launcher.setVisible(true);
+        });
+        closed.await();
+    }
+
+    /** {@code rwe.home}, else the working directory. */
+    public static Path defaultHome() {
+        return Path.of(System.getProperty("rwe.home", ".")).toAbsolutePath().normalize();
+    }
+
+    /** The "Explore a robot" button. */
+    public JButton exploreButton() {
+        return explore;
+    }
+
+    /** The "Generate a framework" button. */
+    public JButton generateButton() {
+        return generate;
+    }
+
+    /** The "Monitor a world" button. */
+    public JButton monitorButton() {
+        return monitor;
+    }
+
+    private static JButton choice(String text, char mnemonic, Supplier<JFrame> window) {
+        JButton button = new JButton(text);
+        button.setMnemonic(mnemonic);
+        button.addActionListener(event -> {
+            JFrame frame = window.get();
+            frame.setLocationByPlatform(true);
+            frame.setVisible(true);
+        });
+        return button;
+    }
+}

@@ -1,0 +1,122 @@
+package robotworld.explorer.frames;
+
+import java.awt.BorderLayout;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import javax.swing.JButton;
+import javax.swing.JFrame;
+import javax.swing.JPanel;
+import javax.swing.JTextField;
+import javax.swing.SwingWorker;
+import javax.swing.WindowConstants;
+import robotworld.description.DescriptionError;
+import robotworld.description.DescriptionException;
+import robotworld.description.DescriptionLoader;
+import robotworld.description.DescriptionSchemas;
+import robotworld.explorer.monitor.MonitorLoader;
+import robotworld.explorer.monitor.MonitorSpace;
+import robotworld.explorer.monitor.MonitoredWorld;
+import robotworld.explorer.monitor.WorldMonitor;
+import robotworld.space.Capi;
+
+/**
+ * "Monitor a world": choose a world file and, optionally, the space URL (blank: the override or the world's
+ * {@code <SpaceURL>}), then open one monitoring window per participant. Connecting runs off the Swing thread.
+ */
+public final class MonitorFrame extends JFrame {
+
+    /** The window title. */
+    public static final String TITLE = "Monitor a world - RobotWorldExplorer";
+
+    private final PathField worldFile = new PathField("", false, 'B');
+    private final JTextField spaceUrl = new JTextField(30);
+    private final JButton start = Form.button("Open monitors", 'O', event -> start());
+    private final Status status = new Status("Choose a world; leave the space URL blank to use the world's.");
+    private final List<WorldMonitor> opened = new ArrayList<>();
+
+    public MonitorFrame() {
+        super(TITLE);
+        setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+        Form form = new Form();
+        form.row("World file:", 'W', worldFile.textField(), worldFile);
+        form.row("Space URL:", 'S', spaceUrl);
+        JPanel buttons = new JPanel(new BorderLayout());
+        buttons.add(start, BorderLayout.EAST);
+        form.wide(buttons);
+        getContentPane().add(form, BorderLayout.CENTER);
+        getContentPane().add(status, BorderLayout.SOUTH);
+        getRootPane().setDefaultButton(start);
+        pack();
+    }
+
+    /** The world file field. */
+    public JTextField worldFileField() {
+        return worldFile.textField();
+    }
+
+    /** The space URL field. */
+    public JTextField spaceUrlField() {
+        return spaceUrl;
+    }
+
+    /** The button that opens the monitoring windows. */
+    public JButton startButton() {
+        return start;
+    }
+
+    /** The status line. */
+    public String statusText() {
+        return status.getText();
+    }
+
+    /** The world monitors opened from this frame. */
+    public List<WorldMonitor> opened() {
+        return List.copyOf(opened);
+    }
+
+    private void start() {
+        Path file = worldFile.path();
+        if (file == null) {
+            status.error("Type or choose a world file first.");
+            return;
+        }
+        MonitoredWorld world;
+        String url;
+        try {
+            world = MonitoredWorld.of(DescriptionLoader.loadWorld(file, DescriptionSchemas.configured()));
+            url = MonitorSpace.url(spaceUrl.getText(), world);
+        } catch (DescriptionException e) {
+            DescriptionError first = e.errors().get(0);
+            status.error(e.errors().size() + " problem(s), first: " + first);
+            return;
+        } catch (IllegalStateException e) {
+            status.error(e.getMessage());
+            return;
+        }
+        start.setEnabled(false);
+        status.info("Connecting to " + url + "...");
+        new SwingWorker<Capi, Void>() {
+            @Override
+            protected Capi doInBackground() {
+                return MonitorSpace.open(url);
+            }
+
+            @Override
+            protected void done() {
+                start.setEnabled(true);
+                try {
+                    WorldMonitor monitor = new WorldMonitor(world, get(), new MonitorLoader());
+                    opened.add(monitor);
+                    monitor.show();
+                    status.info("Monitoring " + world.moduleCount() + " modules of " + world.name() + " on " + url);
+                } catch (ExecutionException e) {
+                    status.error("Cannot connect to " + url + ": " + e.getCause().getMessage());
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }.execute();
+    }
+}

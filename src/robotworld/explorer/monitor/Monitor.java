@@ -1,0 +1,20 @@
+package robotworld.explorer.monitor;
+
+import javax.swing.JComponent;
+
+/**
+ * Watches one module of a running RobotWorld and shows what it does (thesis 4.2.4). An implementation for
+ * communication type {@code <type>} and module class {@code <Class>} is named
+ * {@code robotworld.explorer.monitor.logic.<type>.<TYPE><Class>Monitor} and has a public constructor
+ * {@code (MonitoredModule, Capi)}; {@link MonitorLoader} finds it by that name, so adding a module type needs
+ * no change here. Create monitors on the Swing event thread; they update their panel on it.
+ */
+public interface Monitor extends AutoCloseable {
+
+    /** The panel showing the module's state; the same component on every call. */
+    JComponent getPanel();
+
+    /** Stops watching (cancels subscriptions); idempotent. The panel stays as it was. */
+    @Override
+    void close();
+}

@@ -1,0 +1,57 @@
+package robotworld.explorer.monitor;
+
+import java.util.ArrayList;
+import java.util.List;
+import javax.swing.JComponent;
+import robotworld.explorer.monitor.gui.ParticipantWindow;
+import robotworld.space.Capi;
+
+/**
+ * Monitoring of a whole world in windows (thesis 4.2.4): for each participant a {@link ParticipantWindow} with
+ * the panel of every module's monitor, loaded by {@link MonitorLoader}. Swing thread only.
+ */
+public final class WorldMonitor implements AutoCloseable {
+
+    private final List<Monitor> monitors = new ArrayList<>();
+    private final List<ParticipantWindow> windows = new ArrayList<>();
+
+    /** Builds the monitors and windows (not shown yet: see {@link #show()}). */
+    public WorldMonitor(MonitoredWorld world, Capi space, MonitorLoader loader) {
+        for (MonitoredParticipant participant : world.participants()) {
+            List<JComponent> panels = new ArrayList<>();
+            for (MonitoredModule module : participant.modules()) {
+                Monitor monitor = loader.load(module, space);
+                monitors.add(monitor);
+                panels.add(monitor.getPanel());
+            }
+            windows.add(new ParticipantWindow(world.name(), participant.name(), participant.kind(), panels));
+        }
+    }
+
+    /** Shows the windows side by side, cascading from the top left corner. */
+    public void show() {
+        int offset = 0;
+        for (ParticipantWindow window : windows) {
+            window.setLocation(offset, offset / 2);
+            window.setVisible(true);
+            offset += 40 + window.getWidth() / 2;
+        }
+    }
+
+    /** The windows, one per participant. */
+    public List<ParticipantWindow> windows() {
+        return List.copyOf(windows);
+    }
+
+    /** The monitors, one per module. */
+    public List<Monitor> monitors() {
+        return List.copyOf(monitors);
+    }
+
+    /** Stops every monitor and closes the windows. */
+    @Override
+    public void close() {
+        monitors.forEach(Monitor::close);
+        windows.forEach(ParticipantWindow::dispose);
+    }
+}

@@ -1,0 +1,116 @@
+package robotworld.explorer.monitor.logic.xvsm;
+
+import java.time.Instant;
+import java.util.Set;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robotworld.space.Capi;
+import robotworld.space.ContainerRef;
+import robotworld.space.ContainerSpec;
+import robotworld.space.Entry;
+import robotworld.space.Notification;
+import robotworld.space.NotificationListener;
+import robotworld.space.NotificationMode;
+import robotworld.space.Operation;
+import robotworld.space.Order;
+import robotworld.space.SpaceException;
+import robotworld.space.Subscription;
+import robotworld.space.SubscriptionEnd;
+import robotworld.space.Timeout;
+import robotworld.xvsm.CallTuple;
+import robotworld.xvsm.MalformedCallException;
+import robotworld.xvsm.XVSMModule;
+
+/**
+ * Subscribes to one module's {@code <Participant><Module>ANSWER} container and hands every answer written or
+ * shifted into it to an {@link AnswerListener}. Every local call the module's host publishes and every answered
+ * remote call is such a shift (docs/runtime.md), so this sees all activity of the module.
+ *
+ * <p>The container is looked up or created, so monitoring may start before the module's program. A
+ * subscription that overflowed or whose container was destroyed is renewed; only a closed space ends watching.
+ */
+public final class AnswerWatcher implements AutoCloseable {
+
+    private static final Logger LOG = LoggerFactory.getLogger(AnswerWatcher.class);
+    private static final Set<Operation> PUBLISHING = Set.of(Operation.WRITE, Operation.SHIFT);
+
+    private final Capi space;
+    private final ContainerSpec spec;
+    private final AnswerListener listener;
+    private Subscription subscription;
+    private boolean closed;
+
+    /**
+     * Starts watching.
+     *
+     * @throws SpaceException when the space cannot be reached
+     */
+    public AnswerWatcher(Capi space, String participant, String moduleName, AnswerListener listener) {
+        this.space = space;
+        // the spec XVSMModule's containers are created with (robotworld.xvsm.ModuleContainers): LIFO, KEY view
+        this.spec = ContainerSpec.of(Order.LIFO).withKeyView().unbounded()
+                .named(XVSMModule.answerContainerName(participant, moduleName));
+        this.listener = listener;
+        subscribe();
+    }
+
+    /** The ANSWER container's name. */
+    public String containerName() {
+        return spec.name();
+    }
+
+    private synchronized void subscribe() {
+        if (closed) {
+            return;
+        }
+        ContainerRef answers = space.lookupOrCreateContainer(spec);
+        subscription = space.subscribe(answers, PUBLISHING, NotificationMode.INFINITE, Timeout.INFINITE,
+                new Forwarder());
+    }
+
+    @Override
+    public synchronized void close() {
+        closed = true;
+        if (subscription != null) {
+            subscription.cancel();
+        }
+    }
+
+    private synchronized boolean isClosed() {
+        return closed;
+    }
+
+    /** Turns notifications into answers, and renews the subscription when it ends early. */
+    private final class Forwarder implements NotificationListener {
+
+        @Override
+        public void onNotification(Notification notification) {
+            Instant now = Instant.now();
+            for (Entry entry : notification.entries()) {
+                try {
+                    listener.answer(CallTuple.parse(entry), now);
+                } catch (MalformedCallException e) {
+                    LOG.debug("{}: ignoring an entry that is not an answer: {}", spec.name(), entry);
+                }
+            }
+        }
+
+        @Override
+        public void onEnd(SubscriptionEnd reason) {
+            if (isClosed() || reason == SubscriptionEnd.CANCELLED) {
+                return;
+            }
+            if (reason == SubscriptionEnd.OVERFLOWED || reason == SubscriptionEnd.CONTAINER_DESTROYED) {
+                try {
+                    subscribe(); // a few answers may be missed; the next one brings the panel up to date
+                    return;
+                } catch (SpaceException e) {
+                    listener.stopped("cannot watch " + spec.name() + " again: " + e.getMessage());
+                    return;
+                }
+            }
+            listener.stopped(reason == SubscriptionEnd.SPACE_CLOSED ? "the space connection closed"
+                    : "watching ended: " + reason);
+        }
+    }
+}

@@ -1,0 +1,81 @@
+package robotworld.explorer.monitor.logic.xvsm;
+
+import java.time.Instant;
+import javax.swing.SwingUtilities;
+import robotworld.explorer.monitor.Monitor;
+import robotworld.explorer.monitor.MonitoredModule;
+import robotworld.explorer.monitor.gui.ModulePanel;
+import robotworld.space.Capi;
+import robotworld.xvsm.CallTuple;
+
+/**
+ * What every XVSM monitor does (thesis table 3): watch the module's ANSWER container and, on the Swing thread,
+ * mark the panel fresh, show error answers as problems and hand good answers to {@link #show}. A subclass only
+ * says how an answer of its module type changes its panel. Create on the Swing thread: the first answer is
+ * shown only after construction has finished.
+ *
+ * @param <P> the module's panel
+ */
+public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
+
+    private final MonitoredModule module;
+    private final P panel;
+    private final AnswerWatcher watcher;
+
+    /**
+     * Subscribes to the ANSWER container of {@code module} in {@code space}.
+     *
+     * @throws robotworld.space.SpaceException when the space cannot be reached
+     */
+    protected XVSMMonitor(MonitoredModule module, Capi space, P panel) {
+        this.module = module;
+        this.panel = panel;
+        this.watcher = new AnswerWatcher(space, module.participant(), module.moduleName(), new AnswerListener() {
+            @Override
+            public void answer(CallTuple answer, Instant when) {
+                SwingUtilities.invokeLater(() -> display(answer, when));
+            }
+
+            @Override
+            public void stopped(String why) {
+                SwingUtilities.invokeLater(() -> panel.showProblem("not watching any more: " + why));
+            }
+        });
+    }
+
+    /**
+     * Shows a good answer of this module on the panel. Swing thread. May throw
+     * {@link robotworld.xvsm.MalformedCallException} (or any runtime exception) for an answer it cannot read;
+     * the panel then says so.
+     */
+    protected abstract void show(CallTuple answer, P panel);
+
+    /** The module watched. */
+    public MonitoredModule module() {
+        return module;
+    }
+
+    @Override
+    public P getPanel() {
+        return panel;
+    }
+
+    @Override
+    public void close() {
+        watcher.close();
+    }
+
+    private void display(CallTuple answer, Instant when) {
+        panel.reported(when, AnswerText.host(answer));
+        if (AnswerText.isError(answer)) {
+            panel.showProblem(AnswerText.function(answer) + ": " + AnswerText.errorMessage(answer));
+            return;
+        }
+        try {
+            show(answer, panel);
+            panel.clearProblem();
+        } catch (RuntimeException e) {
+            panel.showProblem("unreadable answer " + answer + ": " + e.getMessage());
+        }
+    }
+}

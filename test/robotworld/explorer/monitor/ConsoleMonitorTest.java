@@ -1,0 +1,87 @@
+package robotworld.explorer.monitor;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.time.Duration;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.Test;
+import robotworld.description.DescriptionLoader;
+import robotworld.explorer.cli.Rwe;
+import robotworld.xvsm.XVSMBumperModuleLocal;
+import robotworld.xvsm.XVSMBumperModuleRemote;
+import robotworld.xvsm.XVSMRuntime;
+import robotworld.xvsm.XVSMX10ApplianceModuleLocal;
+import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
+
+/** The text view for headless machines: one line per call, from the API and from {@code rwe monitor --console}. */
+class ConsoleMonitorTest {
+
+    @Test
+    void printsOneLinePerCallWithParticipantModuleFunctionAndValue() throws Exception {
+        StringWriter text = new StringWriter();
+        try (MonitoredSpace space = new MonitoredSpace()) {
+            XVSMRuntime room = space.host("room-pc");
+            XVSMRuntime robot = space.host("robot-laptop");
+            XVSMRuntime laptop = space.host("laptop");
+            new XVSMX10ApplianceModuleLocal(room, "DimRoom", "Lamp", new FakeHardware.Appliance());
+            new XVSMBumperModuleLocal(robot, "CaterpillarRobot", "Bumper-Sensor", new FakeHardware.Bumper());
+            MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5()));
+            try (ConsoleMonitor monitor = new ConsoleMonitor(world, space.connection(), new PrintWriter(text))) {
+                assertEquals(3, monitor.moduleCount());
+                new XVSMX10ApplianceModuleRemote(laptop, "DimRoom", "Lamp").on();
+                new XVSMBumperModuleRemote(laptop, "CaterpillarRobot", "Bumper-Sensor").getSingleBumper(4);
+                waitFor(() -> text.toString().lines().count() >= 2);
+            }
+        }
+        String[] lines = text.toString().split("\n");
+        assertTrue(lines[0].matches("\\d\\d:\\d\\d:\\d\\d\\.\\d{3}  DimRoom +Lamp +on +\\(laptop\\)"), lines[0]);
+        assertTrue(lines[1].matches(".*CaterpillarRobot +Bumper-Sensor +getSingleBumper +<4, 1>  \\(laptop\\)"),
+                lines[1]);
+    }
+
+    @Test
+    void rweMonitorConsoleRunsForTheGivenTime() throws Exception {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        try (MonitoredSpace space = new MonitoredSpace()) {
+            XVSMRuntime room = space.host("room-pc");
+            XVSMRuntime laptop = space.host("laptop");
+            new XVSMX10ApplianceModuleLocal(room, "DimRoom", "Lamp", new FakeHardware.Appliance());
+            AtomicInteger exit = new AtomicInteger(-1);
+            AtomicReference<Throwable> failure = new AtomicReference<>();
+            Thread command = new Thread(() -> {
+                try {
+                    exit.set(Rwe.run(new PrintWriter(out, true), new PrintWriter(err, true), "monitor", "--console",
+                            "--space", space.url(), "--for", "30", MonitorTestWorlds.chapter5().toString()));
+                } catch (Throwable e) {
+                    failure.set(e);
+                }
+            }, "rwe monitor");
+            command.start();
+            waitFor(() -> err.toString().contains("monitoring 3 modules"));
+            XVSMX10ApplianceModuleRemote lamp = new XVSMX10ApplianceModuleRemote(laptop, "DimRoom", "Lamp");
+            lamp.on();
+            lamp.off();
+            waitFor(() -> out.toString().contains(" off "));
+            command.interrupt(); // as Ctrl-C would, without ending the test JVM
+            command.join(5_000);
+            assertEquals(0, exit.get(), err.toString());
+            assertEquals(null, failure.get());
+        }
+        assertTrue(out.toString().contains("DimRoom") && out.toString().contains(" on "), out.toString());
+    }
+
+    private static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("condition not met within 5 s");
+            }
+            Thread.sleep(10);
+        }
+    }
+}

@@ -1,0 +1,221 @@
+package robotworld.explorer.monitor;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static robotworld.explorer.gui.GuiTesting.eventually;
+import static robotworld.explorer.gui.GuiTesting.onEdt;
+import static robotworld.explorer.gui.GuiTesting.screenshot;
+import static robotworld.explorer.monitor.MonitorTestWorlds.ROBOT;
+import static robotworld.explorer.monitor.MonitorTestWorlds.ROOM;
+
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robotworld.core.BumperModule;
+import robotworld.core.IRDistanceModule;
+import robotworld.core.MotorModule;
+import robotworld.core.ServoModule;
+import robotworld.core.X10ApplianceModule;
+import robotworld.core.X10LampModule;
+import robotworld.description.DescriptionLoader;
+import robotworld.explorer.gui.GuiTesting;
+import robotworld.explorer.monitor.gui.BumperModulePanel;
+import robotworld.explorer.monitor.gui.FreshnessLabel;
+import robotworld.explorer.monitor.gui.IRDistanceModulePanel;
+import robotworld.explorer.monitor.gui.ModulePanel;
+import robotworld.explorer.monitor.gui.MotorModulePanel;
+import robotworld.explorer.monitor.gui.OnOffIndicator;
+import robotworld.explorer.monitor.gui.ParticipantWindow;
+import robotworld.explorer.monitor.gui.ServoModulePanel;
+import robotworld.explorer.monitor.gui.X10ApplianceModulePanel;
+import robotworld.explorer.monitor.gui.X10LampModulePanel;
+import robotworld.xvsm.XVSMBumperModuleLocal;
+import robotworld.xvsm.XVSMBumperModuleRemote;
+import robotworld.xvsm.XVSMIRDistanceModuleLocal;
+import robotworld.xvsm.XVSMIRDistanceModuleRemote;
+import robotworld.xvsm.XVSMMotorModuleLocal;
+import robotworld.xvsm.XVSMMotorModuleRemote;
+import robotworld.xvsm.XVSMRuntime;
+import robotworld.xvsm.XVSMServoModuleLocal;
+import robotworld.xvsm.XVSMServoModuleRemote;
+import robotworld.xvsm.XVSMX10ApplianceModuleLocal;
+import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
+import robotworld.xvsm.XVSMX10LampModuleLocal;
+import robotworld.xvsm.XVSMX10LampModuleRemote;
+
+/**
+ * The monitoring windows of a running world, driven by real notifications: Local proxies on the modules' hosts,
+ * remote calls from a laptop, all through a loopback space server; the monitor has a connection of its own.
+ */
+class WorldMonitorTest {
+
+    @TempDir
+    Path folder;
+
+    private MonitoredSpace space;
+    private XVSMRuntime room;
+    private XVSMRuntime robot;
+    private XVSMRuntime laptop;
+    private WorldMonitor monitor;
+    private final FakeHardware.Bumper bumperHardware = new FakeHardware.Bumper();
+
+    @BeforeEach
+    void start() throws Exception {
+        GuiTesting.assumeDisplay();
+        space = new MonitoredSpace();
+        room = space.host("room-pc");
+        robot = space.host("robot-laptop");
+        laptop = space.host("laptop");
+        new XVSMX10ApplianceModuleLocal(room, ROOM, "Lamp", new FakeHardware.Appliance());
+        new XVSMX10LampModuleLocal(room, ROOM, "Ceiling", new FakeHardware.Lamp());
+        new XVSMMotorModuleLocal(robot, ROBOT, "Motor-Controller", new FakeHardware.Motor());
+        new XVSMBumperModuleLocal(robot, ROBOT, "Bumper-Sensor", bumperHardware);
+        new XVSMServoModuleLocal(robot, ROBOT, "Head-Servo", new FakeHardware.Servo());
+        new XVSMIRDistanceModuleLocal(robot, ROBOT, "IR-Sensors", new FakeHardware.IR());
+        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.everyModuleType(folder)));
+        monitor = onEdt(() -> {
+            WorldMonitor opened = new WorldMonitor(world, space.connection(), new MonitorLoader());
+            opened.show();
+            return opened;
+        });
+    }
+
+    @AfterEach
+    void stop() throws Exception {
+        if (monitor != null) {
+            onEdt(monitor::close);
+        }
+        if (space != null) {
+            space.close();
+        }
+    }
+
+    @Test
+    void oneWindowPerParticipantWithAPanelPerModule() {
+        List<ParticipantWindow> windows = monitor.windows();
+        assertEquals(2, windows.size());
+        assertEquals("Monitor: DimRoom (environment) - Chapter5World", windows.get(0).getTitle());
+        assertEquals("Monitor: CaterpillarRobot (robot) - Chapter5World", windows.get(1).getTitle());
+        assertEquals(List.of(X10ApplianceModulePanel.class, X10LampModulePanel.class, MotorModulePanel.class,
+                        BumperModulePanel.class, ServoModulePanel.class, IRDistanceModulePanel.class),
+                monitor.monitors().stream().map(m -> m.getPanel().getClass()).toList());
+        assertEquals(FreshnessLabel.NO_REPORT, onEdt(() -> panel(X10ApplianceModulePanel.class).freshness().getText()));
+    }
+
+    @Test
+    void aRemoteCallSwitchesTheApplianceOnAndOff() {
+        X10ApplianceModule lamp = new XVSMX10ApplianceModuleRemote(laptop, ROOM, "Lamp");
+        X10ApplianceModulePanel panel = panel(X10ApplianceModulePanel.class);
+        assertEquals(OnOffIndicator.State.UNKNOWN, onEdt(() -> panel.indicator().state()));
+
+        lamp.on();
+        eventually("the panel shows ON", () -> panel.indicator().state() == OnOffIndicator.State.ON);
+        assertEquals("ON", onEdt(() -> panel.indicator().stateText()));
+        assertTrue(onEdt(() -> panel.freshness().getText()).startsWith("last report "),
+                onEdt(() -> panel.freshness().getText()));
+        assertTrue(onEdt(() -> panel.freshness().getText()).contains("for laptop"));
+        screenshot(panel, "panel-x10-appliance-on");
+
+        lamp.off();
+        eventually("the panel shows OFF", () -> panel.indicator().state() == OnOffIndicator.State.OFF);
+        assertEquals("OFF", onEdt(() -> panel.indicator().stateText()));
+    }
+
+    @Test
+    void theLampLevelIsTheSumOfTheChanges() {
+        X10LampModule lamp = new XVSMX10LampModuleRemote(laptop, ROOM, "Ceiling");
+        X10LampModulePanel panel = panel(X10LampModulePanel.class);
+        lamp.on();
+        eventually("on at full brightness", () -> panel.sliderValue() == 100);
+        lamp.dim(30);
+        eventually("dimmed to 70 %", () -> panel.sliderValue() == 70);
+        lamp.brighten(10);
+        eventually("brightened to 80 %", () -> panel.sliderValue() == 80);
+        screenshot(panel, "panel-x10-lamp");
+        lamp.off();
+        eventually("off", () -> panel.indicator().state() == OnOffIndicator.State.OFF && panel.sliderValue() == 0);
+    }
+
+    @Test
+    void everyPanelShowsItsModule() {
+        new XVSMX10ApplianceModuleRemote(laptop, ROOM, "Lamp").on();
+        X10LampModule ceiling = new XVSMX10LampModuleRemote(laptop, ROOM, "Ceiling");
+        ceiling.on();
+        ceiling.dim(40);
+        MotorModule motor = new XVSMMotorModuleRemote(laptop, ROBOT, "Motor-Controller");
+        ServoModule servo = new XVSMServoModuleRemote(laptop, ROBOT, "Head-Servo");
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        IRDistanceModule ir = new XVSMIRDistanceModuleRemote(laptop, ROBOT, "IR-Sensors");
+
+        motor.setMotor(1, 0.5);
+        motor.setMotorQuiet(2, -0.25);
+        servo.setServo(3, 90);
+        bumper.getAllBumper();
+        ir.getAllSensors();
+        ir.getSingleSensor(2);
+
+        MotorModulePanel motors = panel(MotorModulePanel.class);
+        ServoModulePanel servos = panel(ServoModulePanel.class);
+        BumperModulePanel bumpers = panel(BumperModulePanel.class);
+        IRDistanceModulePanel distances = panel(IRDistanceModulePanel.class);
+        eventually("motor speeds", () -> motors.valueText(1).equals("+0.500") && motors.valueText(2).equals("-0.250"));
+        eventually("servo position", () -> servos.valueText(3).equals("90°"));
+        eventually("bumper colours", () -> bumpers.colourOf(4).equals(BumperModulePanel.CONTACT)
+                && bumpers.colourOf(6).equals(BumperModulePanel.CONTACT)
+                && bumpers.colourOf(1).equals(BumperModulePanel.FREE));
+        eventually("IR distances", () -> distances.valueText(1).equals("120 mm")
+                && distances.valueText(7).equals("75 mm"));
+        assertEquals(ServoModulePanel.UNKNOWN, onEdt(() -> servos.valueText(1)), "servo 1 was never set");
+        X10ApplianceModulePanel appliance = panel(X10ApplianceModulePanel.class);
+        X10LampModulePanel lamp = panel(X10LampModulePanel.class);
+        eventually("room modules", () -> appliance.indicator().state() == OnOffIndicator.State.ON
+                && lamp.sliderValue() == 60);
+
+        // a single bumper turning free changes only its own field
+        bumperHardware.mask.set(1 << 5);
+        bumper.getSingleBumper(4);
+        eventually("bumper 4 free", () -> bumpers.colourOf(4).equals(BumperModulePanel.FREE)
+                && bumpers.colourOf(6).equals(BumperModulePanel.CONTACT));
+
+        for (Monitor each : monitor.monitors()) {
+            ModulePanel panel = (ModulePanel) each.getPanel();
+            screenshot(panel, "panel-" + panel.moduleClass());
+        }
+        screenshot(monitor.windows().get(0), "monitor-window-DimRoom");
+        screenshot(monitor.windows().get(1), "monitor-window-CaterpillarRobot");
+    }
+
+    @Test
+    void aFailedCallIsShownAsAProblemUntilTheNextGoodReport() {
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        BumperModulePanel panel = panel(BumperModulePanel.class);
+        bumperHardware.failing.set(true);
+        try {
+            bumper.getAllBumper();
+        } catch (RuntimeException expected) {
+            // the caller gets the failure; the monitor sees the error answer
+        }
+        eventually("the problem is shown", () -> panel.problemText().contains("bumper module does not answer"));
+        bumperHardware.failing.set(false);
+        bumper.getAllBumper();
+        eventually("the problem is cleared", () -> panel.problemText().isEmpty());
+    }
+
+    @Test
+    void localCallsOnTheModulesHostAreShownToo() {
+        XVSMX10ApplianceModuleLocal local = new XVSMX10ApplianceModuleLocal(room, ROOM, "Lamp",
+                new FakeHardware.Appliance());
+        X10ApplianceModulePanel panel = panel(X10ApplianceModulePanel.class);
+        local.on();
+        eventually("the published local call is shown", () -> panel.indicator().state() == OnOffIndicator.State.ON);
+        assertTrue(onEdt(() -> panel.freshness().getText()).contains("for room-pc"));
+    }
+
+    private <P> P panel(Class<P> type) {
+        return monitor.monitors().stream().map(Monitor::getPanel).filter(type::isInstance).map(type::cast)
+                .findFirst().orElseThrow();
+    }
+}
