@@ -173,6 +173,55 @@ public interface Capi extends AutoCloseable {
         return shift(container, timeout, items(entries));
     }
 
+    /**
+     * Writes {@code items} into {@code writeTo}, then takes from {@code takeFrom}: the two operations one after the
+     * other, within one timeout. It is the shape of a request/answer exchange (write the request, wait for its
+     * answer), and a remote space sends it as one request, so the take is waiting on the server without a second
+     * round trip. Each of the two operations is atomic as usual; the pair is not: other operations may come
+     * between them, and the take's selectors may find anything that is there when it runs.
+     *
+     * @param writeTo   the container to write into
+     * @param items     the entries to write, as for {@link #write(ContainerRef, Timeout, List)}
+     * @param takeFrom  the container to take from (may be {@code writeTo})
+     * @param timeout   bounds both: the write waits at most this long, the take at most what is left of it
+     * @param selectors the take's selectors
+     * @return the taken entries
+     * @throws SpaceTimeoutException      if the write or the take could not happen in time; a failure of the take
+     *                                    (this or any other) leaves the write done
+     * @throws SpaceInterruptedException  if interrupted while waiting: the take had no effect, the write may have
+     *                                    happened
+     */
+    default List<Entry> writeThenTake(ContainerRef writeTo, List<Item> items, ContainerRef takeFrom, Timeout timeout,
+                                      Selector... selectors) {
+        long start = System.nanoTime();
+        write(writeTo, timeout, items);
+        return take(takeFrom, Timeout.remaining(timeout, start), selectors);
+    }
+
+    /**
+     * Shifts {@code items} into {@code shiftTo}, then takes from {@code takeFrom}: as
+     * {@link #writeThenTake}, with a shift (which never waits) instead of the write. What the shift displaces is
+     * not returned. A server answering requests uses it to deliver one answer and wait for the next request in one
+     * exchange.
+     *
+     * @param shiftTo   the container to shift into
+     * @param items     the entries to shift, as for {@link #shift(ContainerRef, Timeout, List)}
+     * @param takeFrom  the container to take from (may be {@code shiftTo})
+     * @param timeout   bounds both: the take waits at most what is left of it after the shift
+     * @param selectors the take's selectors
+     * @return the taken entries
+     * @throws SpaceTimeoutException     if the take could not happen in time; a failure of the take (this or any
+     *                                   other) leaves the shift done
+     * @throws SpaceInterruptedException if interrupted while waiting: the take had no effect, the shift may have
+     *                                   happened
+     */
+    default List<Entry> shiftThenTake(ContainerRef shiftTo, List<Item> items, ContainerRef takeFrom, Timeout timeout,
+                                      Selector... selectors) {
+        long start = System.nanoTime();
+        shift(shiftTo, timeout, items);
+        return take(takeFrom, Timeout.remaining(timeout, start), selectors);
+    }
+
     // ---- notifications ----
 
     /**

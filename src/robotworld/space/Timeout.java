@@ -33,6 +33,19 @@ public record Timeout(long millis) {
         return new Timeout(duration.toMillis());
     }
 
+    /**
+     * What is left of {@code timeout} at this moment, for an operation that began at {@code startNanos}
+     * ({@link System#nanoTime()}): infinite and try-once stay as they are; a time that has run out becomes
+     * {@link #TRY_ONCE}.
+     */
+    public static Timeout remaining(Timeout timeout, long startNanos) {
+        if (timeout.isInfinite() || timeout.isTryOnce()) {
+            return timeout;
+        }
+        long elapsed = java.util.concurrent.TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - startNanos);
+        return new Timeout(Math.max(0, timeout.millis - elapsed));
+    }
+
     /** Whether this waits forever. */
     public boolean isInfinite() {
         return millis == -1;

@@ -1,11 +1,17 @@
 package robotworld.xvsm;
 
+import java.util.List;
 import java.util.function.Function;
+import java.util.function.Supplier;
 import robotworld.space.Capi;
 import robotworld.space.ContainerNotFoundException;
 import robotworld.space.ContainerRef;
 import robotworld.space.ContainerSpec;
+import robotworld.space.Entry;
+import robotworld.space.Item;
 import robotworld.space.Order;
+import robotworld.space.Selector;
+import robotworld.space.Timeout;
 
 /**
  * The two containers of one module: {@code <Participant><Module>REQUEST} (FIFO, unbounded) and
@@ -59,6 +65,28 @@ final class ModuleContainers {
         } catch (ContainerNotFoundException gone) {
             requests = space.lookupOrCreateContainer(requestSpec);
             return operation.apply(requests);
+        }
+    }
+
+    /**
+     * Writes {@code request} into REQUEST, then takes from ANSWER what {@code selector} selects: one exchange with
+     * a remote space ({@link Capi#writeThenTake}). When a container has gone, both are looked up or created again:
+     * if REQUEST is the same container, the request is in it and only the take is repeated; otherwise the request
+     * went with the old one, and both are repeated.
+     *
+     * @param timeout what is left of the call's time, asked again for each attempt
+     */
+    List<Entry> writeThenTake(Item request, Supplier<Timeout> timeout, Selector selector) {
+        ContainerRef requestsBefore = requests;
+        try {
+            return space.writeThenTake(requestsBefore, List.of(request), answers, timeout.get(), selector);
+        } catch (ContainerNotFoundException gone) {
+            requests = space.lookupOrCreateContainer(requestSpec);
+            answers = space.lookupOrCreateContainer(answerSpec);
+            if (requests.equals(requestsBefore)) {
+                return space.take(answers, timeout.get(), selector);
+            }
+            return space.writeThenTake(requests, List.of(request), answers, timeout.get(), selector);
         }
     }
 

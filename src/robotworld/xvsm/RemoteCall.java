@@ -2,8 +2,8 @@ package robotworld.xvsm;
 
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import robotworld.space.Capi;
 import robotworld.space.Entry;
+import robotworld.space.Item;
 import robotworld.space.Selector;
 import robotworld.space.SpaceException;
 import robotworld.space.SpaceInterruptedException;
@@ -40,16 +40,11 @@ final class RemoteCall {
     CallTuple run() {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMillis);
         ModuleContainers containers = module.containers;
-        Capi space = containers.space();
         Tuple tuple = request.toTuple();
         List<Entry> answer;
         try {
-            containers.onRequests(requests -> {
-                space.write(requests, remaining(deadline), tuple);
-                return null;
-            });
-            answer = containers.onAnswers(answers -> space.take(answers, remaining(deadline),
-                    Selector.key(request.key())));
+            // one exchange with a remote space: the take of the answer waits there from the moment of the write
+            answer = containers.writeThenTake(Item.of(tuple), () -> remaining(deadline), Selector.key(request.key()));
         } catch (SpaceTimeoutException e) {
             throw timedOut(tuple);
         } catch (SpaceInterruptedException e) {

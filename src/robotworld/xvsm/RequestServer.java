@@ -106,10 +106,12 @@ final class RequestServer {
 
     private void run() {
         long pause = 0;
+        List<CallTuple> taken = null; // requests taken together with the previous answers
         while (true) {
             List<CallTuple> requests;
             try {
-                requests = nextRequests();
+                requests = taken != null ? taken : nextRequests();
+                taken = null;
                 pause = 0;
             } catch (Stop | SpaceClosedException end) {
                 return;
@@ -124,7 +126,7 @@ final class RequestServer {
                 continue;
             }
             if (!requests.isEmpty()) {
-                answer(requests);
+                taken = answer(requests);
             }
         }
     }
@@ -142,12 +144,33 @@ final class RequestServer {
         return parse(whileWaiting(() -> containers.onRequests(requests -> space.take(requests, Timeout.INFINITE))));
     }
 
-    private void answer(List<CallTuple> requests) {
+    /**
+     * Delivers the answers to {@code requests}. Without batching, the same exchange with the space then waits for
+     * the next request ({@link Capi#shiftThenTake}), which saves a round trip per request.
+     *
+     * @return the next requests, taken with the answers; null if they are still to be taken
+     */
+    private List<CallTuple> answer(List<CallTuple> requests) {
         List<CallTuple> answers = answerer.apply(requests);
         List<Item> items = new ArrayList<>(answers.size());
         for (CallTuple answer : answers) {
             items.add(Item.keyed(answer.key(), answer.toTuple()));
         }
+        if (!batching.getAsBoolean()) {
+            try {
+                return parse(whileWaiting(() -> containers.space().shiftThenTake(containers.answers(), items,
+                        containers.requests(), Timeout.INFINITE)));
+            } catch (Stop | SpaceException e) {
+                // stopping, or the space failed: whether the answers were delivered is unknown, so they are
+                // delivered (again) below. Under the same keys that is harmless: a second shift displaces the first,
+                // or leaves an answer its caller already has, which nobody takes.
+            }
+        }
+        shift(items);
+        return null;
+    }
+
+    private void shift(List<Item> items) {
         try {
             containers.onAnswers(answerContainer -> containers.space().shift(answerContainer, ANSWER_TIMEOUT, items));
         } catch (SpaceException e) {

@@ -27,6 +27,8 @@ final class Answer {
     long sequence = -1;
     boolean more;
     boolean ack;
+    /** writeThenTake: the write happened (also with "more" or an error of the take). */
+    boolean written;
     String outcome;
     String subscription;
     String error;
@@ -52,6 +54,7 @@ final class Answer {
                     case "sequence" -> answer.sequence = in.readLong("sequence");
                     case "more" -> answer.more = in.readBoolean("more");
                     case "ack" -> answer.ack = in.readBoolean("ack");
+                    case "written" -> answer.written = in.readBoolean("written");
                     case "outcome" -> answer.outcome = in.readString("outcome");
                     case "subscription" -> answer.subscription = in.readString("subscription");
                     case "error" -> answer.error = in.readString("error");

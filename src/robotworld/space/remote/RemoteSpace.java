@@ -235,6 +235,51 @@ public final class RemoteSpace implements Capi {
                 .field("timeout", timeout.millis()).items(items).field("call", id)).displaced;
     }
 
+    /**
+     * One request: the server writes, then takes with the same thread, so the take waits there without a second
+     * round trip. If the take's part of the wait runs out on the server (or the server stops after the write), the
+     * take is asked again on its own with what is left of the timeout; the write is never repeated once it happened.
+     */
+    @Override
+    public List<Entry> writeThenTake(ContainerRef writeTo, List<Item> items, ContainerRef takeFrom, Timeout timeout,
+                                     Selector... selectors) {
+        return putThenTake("writeThenTake", writeTo, items, takeFrom, timeout, selectors);
+    }
+
+    /** As {@link #writeThenTake}: one request, the take asked again on its own only if its wait ran out. */
+    @Override
+    public List<Entry> shiftThenTake(ContainerRef shiftTo, List<Item> items, ContainerRef takeFrom, Timeout timeout,
+                                     Selector... selectors) {
+        return putThenTake("shiftThenTake", shiftTo, items, takeFrom, timeout, selectors);
+    }
+
+    private List<Entry> putThenTake(String operation, ContainerRef writeTo, List<Item> items, ContainerRef takeFrom,
+                                    Timeout timeout, Selector[] selectors) {
+        Objects.requireNonNull(writeTo, "container");
+        Objects.requireNonNull(takeFrom, "takeFrom");
+        Objects.requireNonNull(timeout, "timeout");
+        items.forEach(item -> Objects.requireNonNull(item, "item"));
+        for (Selector selector : selectors) {
+            Objects.requireNonNull(selector, "selector");
+        }
+        long start = System.nanoTime();
+        Answer answer = call(operation, timeout, Retry.WRITE_THEN_TAKE, (out, id, wait) -> {
+            out.cref("container", writeTo).field("timeout", wait.millis()).items(items).field("call", id);
+            out.field("take").startObject().cref("container", takeFrom).selectors(selectors)
+                    .field("call", takeId(id)).endObject();
+        });
+        if (answer.more || answer.error != null || answer.outcome != null) {
+            // the write happened, the take did not (yet): take on its own with what is left
+            return take(takeFrom, Timeout.remaining(timeout, start), selectors);
+        }
+        return answer.entries;
+    }
+
+    /** The call id of the take of a writeThenTake whose write has id {@code callId}. */
+    private static String takeId(String callId) {
+        return callId + ".t";
+    }
+
     // ---- notifications ----
 
     @Override
@@ -328,6 +373,8 @@ public final class RemoteSpace implements Capi {
         REMOVAL,
         /** write and shift: ask whether the lost call happened; repeat only if it did not. */
         WRITE,
+        /** writeThenTake: cancel the take (its entries go back), then as {@link #WRITE} for the write. */
+        WRITE_THEN_TAKE,
         /** The outcome cannot be learned: fail with {@link SpaceUnavailableException}. */
         UNSAFE
     }
@@ -351,7 +398,8 @@ public final class RemoteSpace implements Capi {
         long allowance = TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
         long operationDeadline = timeout == null || infinite ? start : start + TimeUnit.MILLISECONDS.toNanos(timeout.millis());
         long networkDeadline = operationDeadline + allowance;
-        boolean needsId = retry == Retry.REMOVAL || retry == Retry.WRITE || waits;
+        boolean needsId = retry != Retry.IDEMPOTENT && retry != Retry.UNSAFE || waits;
+        boolean composite = retry == Retry.WRITE_THEN_TAKE;
         Exception lastFailure = null;
         int attempt = 0;
         while (true) {
@@ -368,6 +416,9 @@ public final class RemoteSpace implements Capi {
             String ackHeader = acks.drain();
             if (waits) {
                 waitingCalls.put(callId, Boolean.TRUE);
+                if (composite) {
+                    waitingCalls.put(takeId(callId), Boolean.TRUE);
+                }
             }
             try {
                 connection = pool.borrow();
@@ -380,12 +431,18 @@ public final class RemoteSpace implements Capi {
                 if (answer.error != null) {
                     WireError kind = WireError.byKind(answer.error);
                     if (kind == WireError.STOPPING || kind == WireError.BUSY) {
+                        if (answer.written) {
+                            return answer; // the write happened: the caller takes on its own
+                        }
                         lastFailure = new SpaceUnavailableException(endpoint.url(), answer.message, null);
                         pool.discardIdle();
                     } else {
                         throw failure(response.status(), kind, answer);
                     }
                 } else if (answer.more) {
+                    if (answer.written) {
+                        return answer; // the write happened: the caller takes on its own
+                    }
                     if (!infinite && System.nanoTime() - operationDeadline >= 0) {
                         throw new SpaceTimeoutException("timed out after " + timeout + " on " + operation);
                     }
@@ -393,7 +450,7 @@ public final class RemoteSpace implements Capi {
                     continue; // the server's wait ran out before ours: ask again
                 } else {
                     if (answer.ack) {
-                        acks.add(callId);
+                        acks.add(composite ? takeId(callId) : callId);
                     }
                     return answer;
                 }
@@ -417,7 +474,7 @@ public final class RemoteSpace implements Capi {
                 // outcome cannot be asked about rely on that guess
                 boolean stale = connection != null && connection.reused && !connection.hasBufferedInput();
                 pool.discardIdle(); // a broken connection usually means they are all broken (server restart)
-                if (sent && (retry == Retry.REMOVAL || retry == Retry.WRITE || !stale)) {
+                if (sent && (retry == Retry.REMOVAL || retry == Retry.WRITE || composite || !stale)) {
                     Answer settled = settleLostCall(operation, callId, retry, networkDeadline, e);
                     if (settled != null) {
                         return settled;
@@ -430,6 +487,9 @@ public final class RemoteSpace implements Capi {
             } finally {
                 if (waits) {
                     waitingCalls.remove(callId);
+                    if (composite) {
+                        waitingCalls.remove(takeId(callId));
+                    }
                 }
             }
             if (!infinite && System.nanoTime() - networkDeadline >= 0) {
@@ -449,6 +509,11 @@ public final class RemoteSpace implements Capi {
                 exchangeQuietly("cancel", null, callId, Math.min(deadline, System.nanoTime()
                         + TimeUnit.MILLISECONDS.toNanos(200))); // if it happened, its entries go back
                 return null;
+            case WRITE_THEN_TAKE:
+                exchangeQuietly("cancel", null, takeId(callId), Math.min(deadline, System.nanoTime()
+                        + TimeUnit.MILLISECONDS.toNanos(200))); // the take never counts: its entries go back
+                // then as a write: "completed" tells the caller to take on its own
+                return settleLostCall(operation, callId, Retry.WRITE, deadline, cause);
             case WRITE:
                 Answer outcome = cancelUntil(callId, deadline);
                 if (outcome != null && "completed".equals(outcome.outcome)) {
@@ -469,6 +534,11 @@ public final class RemoteSpace implements Capi {
     private Answer interrupted(String operation, String callId, Retry retry) {
         Thread.interrupted(); // talk to the server undisturbed; the flag is set again below
         try {
+            if (retry == Retry.WRITE_THEN_TAKE) {
+                // the take is undone; the write is left as it is (the caller learns that it may have happened)
+                exchangeQuietly("cancel", null, takeId(callId), System.nanoTime()
+                        + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
+            }
             Answer outcome = exchangeQuietly("cancel", null, callId, System.nanoTime()
                     + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
             if (retry == Retry.WRITE && outcome != null && "completed".equals(outcome.outcome)) {

@@ -6,9 +6,16 @@ import robotworld.space.wire.WireError;
 final class ErrorAnswer extends RuntimeException {
 
     final WireError error;
+    /** Whether the write of a {@code writeThenTake} happened before its take failed (said in the answer). */
+    final boolean written;
 
     ErrorAnswer(WireError error, String message) {
+        this(error, message, false);
+    }
+
+    ErrorAnswer(WireError error, String message, boolean written) {
         super(message, null, false, false);
         this.error = error;
+        this.written = written;
     }
 }

@@ -34,8 +34,16 @@ final class RequestFields {
     Set<Operation> operations;
     NotificationMode mode;
     List<String> calls;
+    /** The take of a {@code writeThenTake}: its container, selectors and call id. */
+    RequestFields take;
 
     static RequestFields parse(WireReader in, int maxAcks) {
+        RequestFields fields = parseObject(in, maxAcks, true);
+        in.end();
+        return fields;
+    }
+
+    private static RequestFields parseObject(WireReader in, int maxAcks, boolean top) {
         RequestFields fields = new RequestFields();
         in.startObject();
         String field;
@@ -56,10 +64,15 @@ final class RequestFields {
                     fields.calls = in.readStrings("calls", maxAcks);
                     fields.calls.forEach(id -> id(id, "calls"));
                 }
+                case "take" -> {
+                    if (!top) {
+                        throw in.unknownField(field); // one level only
+                    }
+                    fields.take = parseObject(in, maxAcks, false);
+                }
                 default -> throw in.unknownField(field);
             }
         }
-        in.end();
         return fields;
     }
 

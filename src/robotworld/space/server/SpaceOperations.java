@@ -1,6 +1,7 @@
 package robotworld.space.server;
 
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 
 import robotworld.space.ContainerInfo;
 import robotworld.space.ContainerNotFoundException;
@@ -41,6 +42,8 @@ final class SpaceOperations {
             case "take" -> waiting(Operation.TAKE, in, out);
             case "destroy" -> waiting(Operation.DESTROY, in, out);
             case "write" -> waiting(Operation.WRITE, in, out);
+            case "writeThenTake" -> putThenTake(false, in, out);
+            case "shiftThenTake" -> putThenTake(true, in, out);
             case "shift" -> shift(in, out);
             case "ack" -> in.required(in.calls, "calls").forEach(state.leases::acknowledge);
             case "cancel" -> cancel(in.required(in.call, "call"), out);
@@ -76,12 +79,19 @@ final class SpaceOperations {
     // ---- waiting operations ----
 
     private void waiting(Operation operation, RequestFields in, WireWriter out) {
+        waiting(operation, in, in.required(in.timeout, "timeout"), state.options.maxWaitMillis(), out);
+    }
+
+    /**
+     * Runs a read, take, destroy or write that may wait, at most {@code maxWait} ms here.
+     *
+     * @return false if the wait ran out before the requested timeout ({@code "more"} was answered: no effect)
+     */
+    private boolean waiting(Operation operation, RequestFields in, Timeout requested, long maxWait, WireWriter out) {
         ContainerRef container = in.required(in.container, "container");
-        Timeout requested = in.required(in.timeout, "timeout");
         if (operation == Operation.WRITE) {
             in.required(in.items, "items");
         }
-        long maxWait = state.options.maxWaitMillis();
         boolean split = requested.isInfinite() || requested.millis() > maxWait;
         Timeout wait = split ? Timeout.ofMillis(maxWait) : requested;
         boolean blocks = !wait.isTryOnce();
@@ -138,13 +148,47 @@ final class SpaceOperations {
             }
             if (timedOut) {
                 out.field("more", true);
-                return;
+                return false;
             }
             answer(operation, result, in.call, out);
+            return true;
         } finally {
             if (blocks) {
                 state.waitingPermits.release();
             }
+        }
+    }
+
+    /**
+     * A write (or shift), then a take (from the same or another container) by the same thread: the two operations
+     * one after the other, as if sent as two requests, but in one exchange, so a caller that waits for an answer to
+     * what it writes has its take registered without a second round trip. Each operation is atomic on its own; the pair
+     * is not (others may act between them). Both waits together stay within the server's maximum wait: if the
+     * write cannot happen in it, the answer is {@code "more"} (nothing happened); once it has happened, the answer
+     * says {@code "written": true}, also with {@code "more"} (the take's wait ran out: ask again with a plain take)
+     * and with an error (the take failed; the write stays done).
+     */
+    private void putThenTake(boolean shift, RequestFields in, WireWriter out) {
+        long started = System.nanoTime();
+        RequestFields take = in.required(in.take, "take");
+        take.required(take.container, "take.container");
+        Timeout requested = in.required(in.timeout, "timeout");
+        long maxWait = state.options.maxWaitMillis();
+        if (shift) {
+            shift(in, out); // never waits
+        } else if (!waiting(Operation.WRITE, in, requested, maxWait, out)) {
+            return; // "more": the write did not happen
+        }
+        out.field("written", true);
+        long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
+        Timeout left = requested.isInfinite() || requested.isTryOnce() ? requested
+                : Timeout.ofMillis(Math.max(0, requested.millis() - elapsed));
+        try {
+            waiting(Operation.TAKE, take, left, Math.max(0, maxWait - elapsed), out);
+        } catch (ErrorAnswer e) {
+            throw new ErrorAnswer(e.error, e.getMessage(), true);
+        } catch (RuntimeException e) {
+            throw new ErrorAnswer(WireError.of(e), e.getMessage() == null ? e.toString() : e.getMessage(), true);
         }
     }
 

@@ -58,9 +58,9 @@ final class SpaceServlet extends HttpServlet {
                 operation(path.substring(1), request, response);
             }
         } catch (ErrorAnswer e) {
-            error(response, e.error, e.getMessage());
+            error(response, e.error, e.getMessage(), e.written);
         } catch (WireFormatException e) {
-            error(response, WireError.BAD_REQUEST, e.getMessage());
+            error(response, WireError.BAD_REQUEST, e.getMessage(), false);
         } catch (UncheckedIOException e) {
             throw e.getCause(); // the connection failed: nobody to answer
         } catch (RuntimeException e) {
@@ -68,7 +68,7 @@ final class SpaceServlet extends HttpServlet {
             if (kind == WireError.INTERNAL) {
                 LOG.log(Level.WARNING, "space request failed", e);
             }
-            error(response, kind, e.getMessage() == null ? e.toString() : e.getMessage());
+            error(response, kind, e.getMessage() == null ? e.toString() : e.getMessage(), false);
         }
     }
 
@@ -249,14 +249,18 @@ final class SpaceServlet extends HttpServlet {
         body.writeTo(response.getOutputStream());
     }
 
-    private void error(HttpServletResponse response, WireError kind, String message) throws IOException {
+    private void error(HttpServletResponse response, WireError kind, String message, boolean written)
+            throws IOException {
         if (response.isCommitted()) {
             return;
         }
         ByteArrayOutputStream body = new ByteArrayOutputStream(128);
         try (WireWriter out = state.wire.writer(body)) {
-            out.startObject().field("error", kind.kind()).field("message", truncate(message, MAX_MESSAGE_CHARS))
-                    .endObject();
+            out.startObject().field("error", kind.kind()).field("message", truncate(message, MAX_MESSAGE_CHARS));
+            if (written) {
+                out.field("written", true);
+            }
+            out.endObject();
         }
         if (kind == WireError.BUSY || kind == WireError.STOPPING) {
             response.setHeader("Retry-After", "1");

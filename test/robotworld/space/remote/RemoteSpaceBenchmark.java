@@ -63,7 +63,10 @@ public final class RemoteSpaceBenchmark {
             Row tcp = measure("raw TCP loopback round trip (16-byte echo)", echo, () -> tcpRoundTrips(echo));
             rows.add(tcp);
             rows.add(measure("remote write+take cycle (2 requests)", echo, () -> writeTakeCycles(uri)));
-            Row call = measure("request/answer cycle of a remote module call", echo, () -> requestAnswerCycles(uri));
+            rows.add(measure("request/answer cycle, separate write and take (4 requests)", echo,
+                    () -> requestAnswerCycles(uri, false)));
+            Row call = measure("request/answer cycle of a remote module call (writeThenTake)", echo,
+                    () -> requestAnswerCycles(uri, true));
             rows.add(call);
             rows.add(measure("notification latency (write call to listener)", echo, () -> notificationLatencies(uri)));
             rows.add(measure("one trivial request (describe), this client", echo, () -> describeCalls(uri)));
@@ -72,7 +75,7 @@ public final class RemoteSpaceBenchmark {
             print(rows);
             System.out.printf("%nrequest/answer p50 = %.1f x the TCP round trip measured just before it, median of"
                     + " %d runs (target <= 8); notification p50 = %.0f us (target <= 300)%n", call.ratio(), RUNS,
-                    rows.get(3).p50());
+                    rows.get(4).p50());
             concurrentClients(uri);
         }
     }
@@ -115,8 +118,10 @@ public final class RemoteSpaceBenchmark {
     /**
      * Client A writes {@code <A, i>} to a FIFO REQUEST container; client B, blocked in a take, receives it and
      * shifts the answer under A's key into a LIFO+KEY ANSWER container; A, blocked in a take of its key, receives it.
+     * With {@code composite}, A sends its write and its take in one request ({@code writeThenTake}), as a remote
+     * module call does; otherwise as two requests, the take sent once the write is answered.
      */
-    private static long[] requestAnswerCycles(URI uri) throws Exception {
+    private static long[] requestAnswerCycles(URI uri, boolean composite) throws Exception {
         try (RemoteSpace a = RemoteSpace.open(uri); RemoteSpace b = RemoteSpace.open(uri)) {
             String suffix = Long.toString(System.nanoTime());
             ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQUEST" + suffix));
@@ -135,8 +140,14 @@ public final class RemoteSpaceBenchmark {
             long[] samples = new long[ROUND_TRIPS];
             for (int i = 0; i < samples.length; i++) {
                 long start = System.nanoTime();
-                a.write(requests, Timeout.TRY_ONCE, Tuple.of("A", i));
-                Tuple answer = (Tuple) a.take(answers, Timeout.ofMillis(5_000), Selector.key("A")).get(0);
+                Tuple answer;
+                if (composite) {
+                    answer = (Tuple) a.writeThenTake(requests, List.of(Item.of(Tuple.of("A", i))), answers,
+                            Timeout.ofMillis(5_000), Selector.key("A")).get(0);
+                } else {
+                    a.write(requests, Timeout.TRY_ONCE, Tuple.of("A", i));
+                    answer = (Tuple) a.take(answers, Timeout.ofMillis(5_000), Selector.key("A")).get(0);
+                }
                 samples[i] = System.nanoTime() - start;
                 if (answer.longAt(0) != i + 1) {
                     throw new IllegalStateException("wrong answer " + answer + " for " + i);
@@ -295,7 +306,8 @@ public final class RemoteSpaceBenchmark {
         while (System.nanoTime() < until) {
             tcpRoundTrips(echo);
             writeTakeCycles(uri);
-            requestAnswerCycles(uri);
+            requestAnswerCycles(uri, false);
+            requestAnswerCycles(uri, true);
             notificationLatencies(uri);
         }
     }

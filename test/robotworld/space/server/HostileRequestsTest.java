@@ -178,6 +178,10 @@ class HostileRequestsTest {
                 + ",\"timeout\":0,\"please\":true}")));
         attacks.add(new Attack("missing timeout", t -> t.post("/take", "{\"container\":" + t.cref() + "}")));
         attacks.add(new Attack("missing items", t -> t.post("/write", "{\"container\":" + t.cref() + ",\"timeout\":0}")));
+        attacks.add(new Attack("writeThenTake without its take", t -> t.post("/writeThenTake", "{\"container\":"
+                + t.cref() + ",\"timeout\":0,\"items\":[{\"entry\":1}]}")));
+        attacks.add(new Attack("take nested in a take", t -> t.post("/shiftThenTake", "{\"container\":" + t.cref()
+                + ",\"timeout\":0,\"items\":[],\"take\":{\"container\":" + t.cref() + ",\"take\":{}}}")));
         attacks.add(new Attack("cref without space", t -> t.post("/take", "{\"container\":{\"cref\":\"c1\"},\"timeout\":0}")));
         attacks.add(new Attack("bad call id", t -> t.post("/take", "{\"container\":" + t.cref()
                 + ",\"timeout\":0,\"call\":\"../../etc\"}")));
