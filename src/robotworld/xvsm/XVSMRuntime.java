@@ -168,12 +168,16 @@ public final class XVSMRuntime implements AutoCloseable {
      * provider stopped with Ctrl-C releases its hardware and stops its module threads.
      */
     public void serveUntilStopped() throws InterruptedException {
+        long serving;
         synchronized (this) {
             if (!closing && shutdownHook == null) {
                 shutdownHook = new Thread(this::close, "xvsm-runtime-shutdown " + hostName);
                 Runtime.getRuntime().addShutdownHook(shutdownHook);
             }
+            serving = owned.stream().filter(XVSMLocalModule.class::isInstance).count();
         }
+        // a provider is otherwise silent: say once what it does and how to stop it
+        LOG.info("{} serving {} module(s) through {}; stop with Ctrl-C", hostName, serving, space.spaceUri());
         closedLatch.await();
     }
 
