@@ -1,0 +1,57 @@
+package robotworld.explorer.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+import robotworld.explorer.demo.Demo;
+import robotworld.explorer.demo.DemoOptions;
+import robotworld.explorer.demo.DemoSummary;
+import robotworld.explorer.demo.Viewpoint;
+
+/** {@code rwe demo [--seconds N] [--viewpoint robot|environment] [--out DIR] [--console]}: the chapter-5 demo. */
+@Command(name = "demo", mixinStandardHelpOptions = true,
+        description = {"Run the thesis chapter-5 scenario end to end on simulated hardware (see docs/demo.md):",
+                "space server, simulated robot and CM11A, bus exploration, world assembly, two generated frameworks",
+                "built with plain Ant, listing 5.2 as the control program, monitoring, and a summary.",
+                "Exit code 0 when every step worked, 1 when one failed."})
+final class DemoCommand implements Callable<Integer> {
+
+    @Option(names = "--seconds", paramLabel = "N", defaultValue = "30",
+            description = "how long the control program runs (default: ${DEFAULT-VALUE})")
+    private double seconds;
+
+    @Option(names = "--viewpoint", paramLabel = "robot|environment", defaultValue = "robot",
+            description = "whose main class gets the control program (default: ${DEFAULT-VALUE}); "
+                    + "environment: DimRoom drives the robot remotely (thesis 5.3)")
+    private String viewpoint;
+
+    @Option(names = "--out", paramLabel = "DIR", defaultValue = "build/demo",
+            description = "where the descriptions and generated projects go (default: ${DEFAULT-VALUE})")
+    private Path out;
+
+    @Option(names = "--console", description = "console monitor even when a display is available")
+    private boolean console;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter stdout = spec.commandLine().getOut();
+        DemoOptions options;
+        try {
+            options = new DemoOptions(Duration.ofMillis(Math.round(seconds * 1000)), Viewpoint.parse(viewpoint),
+                    out, console, DemoOptions.defaultHome());
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        DemoSummary summary = new Demo(options, stdout).run();
+        return summary.succeeded() ? 0 : 1;
+    }
+}

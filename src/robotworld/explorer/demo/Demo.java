@@ -1,0 +1,397 @@
+package robotworld.explorer.demo;
+
+import java.awt.GraphicsEnvironment;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.swing.SwingUtilities;
+import robotworld.bus.BusTiming;
+import robotworld.bus.RS485Bus;
+import robotworld.bus.SerialSettings;
+import robotworld.bus.explore.ExplorationListener;
+import robotworld.bus.explore.ExplorationResult;
+import robotworld.bus.explore.FoundModule;
+import robotworld.bus.explore.ModuleCatalog;
+import robotworld.bus.explore.RobotExplorer;
+import robotworld.description.DescriptionException;
+import robotworld.description.RobotWorldAssembler;
+import robotworld.explorer.FrameworkGenerator;
+import robotworld.explorer.generator.GenerationListener;
+import robotworld.explorer.generator.GenerationResult;
+import robotworld.explorer.monitor.ConsoleMonitor;
+import robotworld.explorer.monitor.MonitorLoader;
+import robotworld.explorer.monitor.MonitorSpace;
+import robotworld.explorer.monitor.MonitoredWorld;
+import robotworld.explorer.monitor.WorldMonitor;
+import robotworld.sim.Cm11aTiming;
+import robotworld.sim.SimulatedCm11a;
+import robotworld.sim.robot.SimulatedRobot;
+import robotworld.space.Capi;
+import robotworld.space.server.SpaceServer;
+import robotworld.description.RobotWorldDocument;
+import robotworld.xvsm.XVSMBumperModuleRemote;
+import robotworld.xvsm.XVSMRuntime;
+import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
+
+/**
+ * The chapter-5 proof of concept end to end (issue 10): space server, simulated robot and CM11A, exploration,
+ * assembly, two generated and Ant-built frameworks, one of them with listing 5.2 in its main class, monitoring, a
+ * bounded run and a summary. Every step prints what it does; a failed step ends the demo with a failed summary.
+ */
+public final class Demo {
+
+    static final String ROBOT = "CaterpillarRobot";
+    static final String ENVIRONMENT = "DimRoom";
+    static final String PACKAGE = "chapter5demo";
+    private static final Duration START_TIMEOUT = Duration.ofSeconds(60);
+    private static final Pattern STATS = Pattern.compile(
+            "DEMO-STATS name=(\\w+) calls=(\\d+) p50us=(\\d+) p99us=(\\d+) maxus=(\\d+)");
+    private static final Pattern BUMPS = Pattern.compile("DEMO-STATS name=bumps count=(\\d+)");
+
+    private final DemoOptions options;
+    private final PrintWriter out;
+    private final DemoSummary summary = new DemoSummary();
+    private int stepNumber;
+    private String bumperName = "Bumper-Sensor";
+
+    public Demo(DemoOptions options, PrintWriter out) {
+        this.options = options;
+        this.out = out;
+    }
+
+    /** A step's work; may throw anything, which fails the step and the demo. */
+    private interface Work<T> {
+        T run() throws Exception;
+    }
+
+    private <T> T step(String what, Work<T> work) throws StepFailed {
+        stepNumber++;
+        out.println("[" + stepNumber + "/8] " + what);
+        out.flush();
+        long started = System.nanoTime();
+        try {
+            T result = work.run();
+            out.printf(Locale.ROOT, "      done in %.1f s%n", (System.nanoTime() - started) / 1e9);
+            out.flush();
+            return result;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            summary.failures.add("step " + stepNumber + " (" + what + ") interrupted");
+            throw new StepFailed();
+        } catch (Exception e) {
+            String message = e.getMessage() == null ? e.toString() : e.getMessage();
+            if (e instanceof DescriptionException d) {
+                message = d.errors().toString();
+            }
+            out.println("      FAILED: " + message);
+            out.flush();
+            summary.failures.add("step " + stepNumber + " (" + what + "): " + message);
+            throw new StepFailed();
+        }
+    }
+
+    private void say(String line) {
+        out.println("      " + line);
+        out.flush();
+    }
+
+    private static final class StepFailed extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        StepFailed() {
+            super(null, null, false, false);
+        }
+    }
+
+    /** Runs the whole demo; never throws for a failed step, see {@link DemoSummary#succeeded()}. */
+    public DemoSummary run() {
+        long started = System.currentTimeMillis();
+        summary.viewpoint = options.viewpoint();
+        Path out = options.out().toAbsolutePath().normalize();
+        List<ProgramProcess> programs = new ArrayList<>();
+        try {
+            Files.createDirectories(out);
+            runSteps(out, programs);
+        } catch (StepFailed e) {
+            // reported by step()
+        } catch (Exception e) {
+            summary.failures.add(e.toString());
+        } finally {
+            for (ProgramProcess program : programs) {
+                program.close();
+            }
+        }
+        summary.elapsedMillis = System.currentTimeMillis() - started;
+        summary.print(this.out);
+        return summary;
+    }
+
+    private void runSteps(Path out, List<ProgramProcess> programs) throws Exception {
+        Path home = options.home();
+        try (SpaceServer space = step("starting a space server on a free loopback port", () -> {
+            SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200));
+            say("space server at " + server.uri());
+            return server;
+        })) {
+            String spaceUrl = space.uri().toString();
+            Simulators simulators = step("starting a simulated robot (motor + bumper modules in an arena) and a "
+                    + "simulated CM11A with an X10 appliance module at A3", () -> Simulators.start(home, this));
+            try (simulators) {
+                runWithSimulators(out, programs, spaceUrl, simulators);
+            }
+        }
+    }
+
+    /** The two simulators and their ports. */
+    private static final class Simulators implements AutoCloseable {
+        SimulatedRobot robot;
+        SimulatedCm11a cm11a;
+        String busPort;
+        String x10Port;
+        final AtomicInteger on = new AtomicInteger();
+        final AtomicInteger off = new AtomicInteger();
+
+        static Simulators start(Path home, Demo demo) throws Exception {
+            Simulators s = new Simulators();
+            try {
+                Path sim = home.resolve("docs/examples/demo-robot.sim");
+                s.robot = SimulatedRobot.load(sim);
+                s.busPort = s.robot.serve("tcp://127.0.0.1:0");
+                demo.say("robot from " + sim + " on " + s.busPort + ", at " + s.robot.pose());
+                s.cm11a = SimulatedCm11a.withDevices(Cm11aTiming.fast(), "A3=appliance");
+                s.cm11a.onPowerLine(frame -> {
+                    if (frame.equals("A On")) {
+                        s.on.incrementAndGet();
+                    } else if (frame.equals("A Off")) {
+                        s.off.incrementAndGet();
+                    }
+                });
+                s.x10Port = s.cm11a.listen(0);
+                demo.say("CM11A on " + s.x10Port + " with an appliance module (the lamp) at A3");
+                return s;
+            } catch (Exception e) {
+                s.close();
+                throw e;
+            }
+        }
+
+        @Override
+        public void close() {
+            if (robot != null) {
+                robot.close();
+            }
+            if (cm11a != null) {
+                cm11a.close();
+            }
+        }
+    }
+
+    private void runWithSimulators(Path out, List<ProgramProcess> programs, String spaceUrl, Simulators sims)
+            throws Exception {
+        Path home = options.home();
+        summary.robotDescription = out.resolve("descriptions/" + ROBOT + ".xml");
+        step("exploring the simulated robot's bus and writing its robot description", () -> {
+            try (RS485Bus bus = new RS485Bus(sims.busPort, SerialSettings.eightNoneOne(115200),
+                    BusTiming.defaults())) {
+                RobotExplorer explorer = new RobotExplorer(bus, new ModuleCatalog(home.resolve("ModuleDescriptions")))
+                        .addresses(1, 8).host("robot-laptop");
+                say("scanning addresses 1..8 of " + sims.busPort);
+                ExplorationResult result = explorer.explore(ROBOT, new ExplorationListener() {
+                    @Override
+                    public void moduleFound(FoundModule module) {
+                        say("found " + module);
+                        if (module.moduleClass().contains("Bumper")) {
+                            bumperName = module.name();
+                        }
+                    }
+                });
+                if (result.description().isEmpty()) {
+                    throw new IllegalStateException("no module found on the simulated robot's bus");
+                }
+                RobotWorldAssembler.write(result.description().get(), summary.robotDescription);
+                say("wrote " + summary.robotDescription);
+            }
+            return null;
+        });
+
+        summary.world = out.resolve("descriptions/Chapter5Demo-world.xml");
+        Path environmentFile = home.resolve("docs/examples/parts/dim-room.xml");
+        RobotWorldDocument world = step("assembling the RobotWorld from the robot description and the hand-written "
+                + "environment description " + environmentFile, () -> {
+            RobotWorldDocument document = new RobotWorldAssembler("Chapter5Demo").packageName(PACKAGE)
+                    .spaceUrl(spaceUrl).addRobot(summary.robotDescription).addEnvironment(environmentFile).assemble();
+            RobotWorldAssembler.write(document, summary.world);
+            say("wrote " + summary.world + " (package " + PACKAGE + ", space " + spaceUrl + ")");
+            return document;
+        });
+
+        boolean robotControls = options.viewpoint() == Viewpoint.ROBOT;
+        summary.robotProject = out.resolve("robot");
+        summary.environmentProject = out.resolve("environment");
+        GenerationResult[] generated = new GenerationResult[2];
+        step("generating the robot and the environment viewpoint frameworks, listing 5.2 into the "
+                + (robotControls ? ROBOT : ENVIRONMENT) + " main class, building each with its own build.xml ("
+                + AntBuild.antCommand() + " compile)", () -> {
+            FrameworkGenerator generator = new FrameworkGenerator();
+            generated[0] = generator.generate(summary.world, ROBOT, null, summary.robotProject, true,
+                    GenerationListener.SILENT);
+            generated[1] = generator.generate(summary.world, ENVIRONMENT, null, summary.environmentProject, true,
+                    GenerationListener.SILENT);
+            GenerationResult control = robotControls ? generated[0] : generated[1];
+            Path mainSource = control.destination().resolve("src/" + control.mainClass().replace('.', '/')
+                    + ".java");
+            ControlProgram.insert(mainSource);
+            say("control program inserted into " + mainSource);
+            for (GenerationResult result : generated) {
+                AntBuild.compile(result.destination());
+                say("built " + result.destination() + " (main class " + result.mainClass() + ")");
+            }
+            return null;
+        });
+
+        MonitoredWorld monitored = MonitoredWorld.of(world);
+        boolean windows = !options.console() && !GraphicsEnvironment.isHeadless();
+        MonitorTally tally = new MonitorTally(windows ? null : out());
+        try (Capi monitorSpace = MonitorSpace.open(spaceUrl)) {
+            ConsoleMonitor console = step("monitoring all " + monitored.moduleCount() + " modules: "
+                    + (windows ? "monitor windows (and a silent tally)" : "console monitor (changes shown below)"),
+                    () -> new ConsoleMonitor(monitored, monitorSpace, new PrintWriter(tally, true)));
+            WorldMonitor[] worldMonitor = new WorldMonitor[1];
+            try (console) {
+                if (windows) {
+                    SwingUtilities.invokeAndWait(() -> {
+                        worldMonitor[0] = new WorldMonitor(monitored, monitorSpace, new MonitorLoader());
+                        worldMonitor[0].show();
+                    });
+                }
+                runPrograms(programs, spaceUrl, sims, generated, robotControls);
+            } finally {
+                if (worldMonitor[0] != null) {
+                    SwingUtilities.invokeAndWait(() -> worldMonitor[0].close());
+                }
+                Thread.sleep(300); // the last answers reach the monitor
+                summary.monitorAnswers = tally.answers.get();
+                summary.monitorBumps = tally.bumpAnswers.get();
+                summary.monitorLampOn = tally.lampOn.get();
+                summary.monitorLampOff = tally.lampOff.get();
+                summary.monitorMotor = tally.motorAnswers.get();
+                summary.endPose = sims.robot.pose();
+            }
+        }
+        step("checking the outcome", () -> {
+            List<String> problems = new ArrayList<>();
+            if (summary.distanceMoved() < 20) {
+                problems.add("the robot did not move");
+            }
+            if (summary.bumps < 1) {
+                problems.add("no bump happened");
+            }
+            if (summary.lampOnFrames < 1 || summary.lampOffFrames < 1) {
+                problems.add("the lamp was not switched on and off at the CM11A");
+            }
+            if (summary.monitorAnswers < 1) {
+                problems.add("the monitor received nothing");
+            }
+            if (!problems.isEmpty()) {
+                throw new IllegalStateException(String.join("; ", problems));
+            }
+            say("robot moved, bumped, lamp switched, monitor saw it");
+            return null;
+        });
+    }
+
+    private PrintWriter out() {
+        return out;
+    }
+
+    private void runPrograms(List<ProgramProcess> programs, String spaceUrl, Simulators sims,
+            GenerationResult[] generated, boolean robotControls) throws Exception {
+        GenerationResult provider = robotControls ? generated[1] : generated[0];
+        GenerationResult controller = robotControls ? generated[0] : generated[1];
+        List<String> properties = new ArrayList<>(List.of("-Drwe.space.url=" + spaceUrl,
+                "-Drwe.port." + ROBOT + ".bus=" + sims.busPort, "-Drwe.port." + ENVIRONMENT + ".x10=" + sims.x10Port,
+                "-Drwe.call.timeout.ms=" + START_TIMEOUT.toMillis()));
+        step("running " + provider.mainClass() + " unchanged as the resource provider, then " + controller.mainClass()
+                + " with the control program for " + options.run().toSeconds() + " s", () -> {
+            ProgramProcess providing = ProgramProcess.start(provider.destination(), provider.mainClass(), properties);
+            programs.add(providing);
+            say("provider " + provider.mainClass() + " started (pid " + providing.pid() + ", log "
+                    + providing.log() + ")");
+            awaitProvider(spaceUrl, robotControls, providing);
+            sims.on.set(0);
+            sims.off.set(0);
+            summary.startPose = sims.robot.pose();
+            long until = System.currentTimeMillis() + options.run().toMillis();
+            List<String> controlProperties = new ArrayList<>(properties);
+            controlProperties.add("-D" + ControlProgram.UNTIL_PROPERTY + "=" + until);
+            ProgramProcess controlling = ProgramProcess.start(controller.destination(), controller.mainClass(),
+                    controlProperties);
+            programs.add(controlling);
+            say("control program " + controller.mainClass() + " started (pid " + controlling.pid() + ", log "
+                    + controlling.log() + "), runs until the deadline");
+            int reported = 0;
+            while (System.currentTimeMillis() < until + 20_000 && controlling.isAlive()
+                    && !controlling.output().contains("DEMO-END")) {
+                Thread.sleep(200);
+                long bumps = controlling.output().lines().filter(l -> l.startsWith("DEMO-BUMP")).count();
+                if (bumps > reported) {
+                    reported = (int) bumps;
+                    say("bump #" + bumps + " at " + sims.robot.pose() + "; lamp switches so far: " + sims.on.get()
+                            + " on, " + sims.off.get() + " off");
+                }
+            }
+            summary.lampOnFrames = sims.on.get();
+            summary.lampOffFrames = sims.off.get();
+            String output = controlling.output();
+            readStatistics(output);
+            if (!output.contains("DEMO-END")) {
+                throw new IllegalStateException("the control program did not finish in time; its log:\n"
+                        + controlling.tail(20));
+            }
+            if (!providing.isAlive()) {
+                throw new IllegalStateException("the provider ended early; its log:\n" + providing.tail(20));
+            }
+            return null;
+        });
+    }
+
+    /** Waits until the provider serves: a first call through the space that waits for its answer. */
+    private void awaitProvider(String spaceUrl, boolean robotControls, ProgramProcess providing) throws Exception {
+        try (XVSMRuntime probe = XVSMRuntime.connect(spaceUrl, "demo-monitor")) {
+            if (robotControls) {
+                XVSMX10ApplianceModuleRemote lamp = probe.own(new XVSMX10ApplianceModuleRemote(probe, ENVIRONMENT,
+                        "Lamp"));
+                lamp.setCallTimeout(START_TIMEOUT);
+                lamp.off();
+            } else {
+                XVSMBumperModuleRemote bumper = probe.own(new XVSMBumperModuleRemote(probe, ROBOT, bumperName));
+                bumper.setCallTimeout(START_TIMEOUT);
+                bumper.getAllBumper();
+            }
+            say("provider answers through the space");
+        } catch (RuntimeException e) {
+            throw new IllegalStateException("the provider did not answer: " + e.getMessage() + "; its log:\n"
+                    + providing.tail(20), e);
+        }
+    }
+
+    private void readStatistics(String output) {
+        Matcher matcher = STATS.matcher(output);
+        while (matcher.find()) {
+            summary.calls.add(new DemoSummary.CallStats(matcher.group(1), Integer.parseInt(matcher.group(2)),
+                    Long.parseLong(matcher.group(3)), Long.parseLong(matcher.group(4)),
+                    Long.parseLong(matcher.group(5))));
+        }
+        Matcher bumps = BUMPS.matcher(output);
+        if (bumps.find()) {
+            summary.bumps = Integer.parseInt(bumps.group(1));
+        }
+    }
+}

@@ -1,0 +1,71 @@
+package robotworld.explorer.demo;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import robotworld.testsupport.ProjectFiles;
+
+/**
+ * The whole chapter-5 demo, headless, with a short run: real space server, simulators, exploration, generated
+ * projects built by plain Ant, providers and control program in their own JVMs, console monitor.
+ */
+class DemoTest {
+
+    @TempDir
+    Path temp;
+
+    @ParameterizedTest(name = "control program in the {0} viewpoint")
+    @EnumSource(Viewpoint.class)
+    void theScenarioRunsEndToEndWithRealOutcomes(Viewpoint viewpoint) throws Exception {
+        StringWriter text = new StringWriter();
+        DemoOptions options = new DemoOptions(Duration.ofSeconds(12), viewpoint, temp.resolve("demo"), true,
+                ProjectFiles.root());
+        DemoSummary summary = new Demo(options, new PrintWriter(text, true)).run();
+        String output = text.toString();
+
+        assertTrue(summary.succeeded(), summary.failures() + "\n" + output);
+        assertTrue(summary.distanceMoved() > 50, "the robot moved: " + summary.startPose() + " -> "
+                + summary.endPose());
+        assertTrue(summary.bumps() >= 1, "at least one bump\n" + output);
+        assertTrue(summary.lampOnFrames() >= 1 && summary.lampOffFrames() >= 1,
+                "X10 on and off frames at the CM11A\n" + output);
+        assertTrue(summary.monitorBumps() >= 1, "the monitor saw a bumper contact\n" + output);
+        assertTrue(summary.monitorLampOn() >= 1 && summary.monitorLampOff() >= 1, "the monitor saw the lamp\n"
+                + output);
+        assertTrue(summary.monitorMotor() >= 1, "the monitor saw the motor calls");
+        assertTrue(summary.calls().stream().anyMatch(c -> c.name().equals("lamp") && c.calls() >= 2), output);
+        // the generated projects stay on disk, built, with the control program in the chosen main class
+        Path controlled = viewpoint == Viewpoint.ROBOT
+                ? summary.robotProject().resolve("src/chapter5demo/CaterpillarRobot.java")
+                : summary.environmentProject().resolve("src/chapter5demo/DimRoom.java");
+        assertTrue(Files.readString(controlled).contains("DEMO-STATS"), controlled.toString());
+        Path unchanged = viewpoint == Viewpoint.ROBOT
+                ? summary.environmentProject().resolve("src/chapter5demo/DimRoom.java")
+                : summary.robotProject().resolve("src/chapter5demo/CaterpillarRobot.java");
+        assertTrue(!Files.readString(unchanged).contains("DEMO-STATS"), "the provider runs unchanged");
+        assertTrue(Files.isDirectory(summary.robotProject().resolve("build/classes")));
+        assertTrue(Files.isDirectory(summary.environmentProject().resolve("build/classes")));
+        assertTrue(output.contains("[8/8]") && output.contains("result            OK"), output);
+    }
+
+    @Test
+    void aFailedStepFailsTheDemoAndSaysWhich() {
+        StringWriter text = new StringWriter();
+        // a home without docs/examples/demo-robot.sim: step 2 cannot start the simulated robot
+        DemoOptions options = new DemoOptions(Duration.ofSeconds(1), Viewpoint.ROBOT, temp.resolve("demo"), true,
+                temp.resolve("no-home"));
+        DemoSummary summary = new Demo(options, new PrintWriter(text, true)).run();
+        String output = text.toString();
+        assertTrue(!summary.succeeded(), output);
+        assertTrue(summary.failures().get(0).startsWith("step 2 "), summary.failures().toString());
+        assertTrue(output.contains("[2/8]") && output.contains("FAILED") && !output.contains("[3/8]"), output);
+    }
+}
