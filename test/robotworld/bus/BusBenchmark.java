@@ -1,16 +1,11 @@
 package robotworld.bus;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
-import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import robotworld.testsupport.TcpEcho;
 import robotworld.bus.explore.ExplorationListener;
 import robotworld.bus.explore.ExplorationResult;
 import robotworld.bus.explore.ModuleCatalog;
@@ -125,7 +120,7 @@ public final class BusBenchmark {
         try (SimulatedRobot robot = SimulatedRobot.create(config);
                 RS485Bus bus = new RS485Bus(robot.serve("tcp://127.0.0.1:0"),
                         SerialSettings.eightNoneOne(config.baud()), timing);
-                TcpEcho echo = new TcpEcho()) {
+                TcpEcho echo = new TcpEcho(8, 6)) {
             BumperModuleProxy bumper = new BumperModuleProxy(bus, 2);
             double[] p50 = new double[ROUND_TRIP_RUNS];
             double[] p99 = new double[ROUND_TRIP_RUNS];
@@ -158,57 +153,6 @@ public final class BusBenchmark {
                     median(p99), ROUND_TRIP_RUNS, CALLS_PER_RUN);
             System.out.printf(Locale.ROOT, "  baseline: TCP loopback round trip of the same frame sizes p50 %.1f us; "
                     + "ratio %.1f%n%n", medianTcp, medianP50 / medianTcp);
-        }
-    }
-
-    /** A loopback TCP peer that answers each 8-byte request with 6 bytes: the bumper read's frame sizes. */
-    private static final class TcpEcho implements AutoCloseable {
-
-        private final ServerSocket server;
-        private final Socket client;
-        private final InputStream in;
-        private final OutputStream out;
-        private final byte[] request = new byte[8];
-        private final byte[] reply = new byte[6];
-
-        TcpEcho() throws IOException {
-            server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
-            Thread peer = new Thread(this::serve, "tcp-echo");
-            peer.setDaemon(true);
-            peer.start();
-            client = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort());
-            client.setTcpNoDelay(true);
-            in = client.getInputStream();
-            out = client.getOutputStream();
-        }
-
-        private void serve() {
-            try (Socket socket = server.accept()) {
-                socket.setTcpNoDelay(true);
-                InputStream peerIn = socket.getInputStream();
-                OutputStream peerOut = socket.getOutputStream();
-                byte[] buffer = new byte[8];
-                while (peerIn.readNBytes(buffer, 0, 8) == 8) {
-                    peerOut.write(buffer, 0, 6);
-                    peerOut.flush();
-                }
-            } catch (IOException e) {
-                // the benchmark is over
-            }
-        }
-
-        void roundTrip() throws IOException {
-            out.write(request);
-            out.flush();
-            if (in.readNBytes(reply, 0, 6) != 6) {
-                throw new IOException("echo peer closed");
-            }
-        }
-
-        @Override
-        public void close() throws IOException {
-            client.close();
-            server.close();
         }
     }
 

@@ -22,7 +22,6 @@ import java.util.function.Supplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import robotworld.core.BumperModule;
 import robotworld.core.IRDistanceModule;
 
 /**
@@ -142,28 +141,6 @@ class AdaptiveBatchingTest {
         eventually(count + " requests wait",
                 () -> laptop.space().describeContainer(one.requestContainer()).size() >= count);
         return calls;
-    }
-
-    /** Counts hardware reads of a bumper module. */
-    private static final class CountingBumper implements BumperModule {
-        final AtomicInteger reads = new AtomicInteger();
-        private final BumperModule hardware;
-
-        CountingBumper(BumperModule hardware) {
-            this.hardware = hardware;
-        }
-
-        @Override
-        public int getAllBumper() {
-            reads.incrementAndGet();
-            return hardware.getAllBumper();
-        }
-
-        @Override
-        public boolean getSingleBumper(int bumperNumber) {
-            reads.incrementAndGet();
-            return hardware.getSingleBumper(bumperNumber);
-        }
     }
 
     private static IRDistanceModule countingIr(IRDistanceModule hardware, AtomicInteger reads) {

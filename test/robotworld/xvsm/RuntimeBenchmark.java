@@ -1,11 +1,5 @@
 package robotworld.xvsm;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
-import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -13,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
+import robotworld.testsupport.TcpEcho;
 import robotworld.bus.BumperModuleProxy;
 import robotworld.bus.BusTiming;
 import robotworld.bus.RS485Bus;
@@ -74,7 +69,7 @@ public final class RuntimeBenchmark {
              SimulatedRobot robot = SimulatedRobot.create(config);
              RS485Bus bus = new RS485Bus(robot.serve("tcp://127.0.0.1:0"), SerialSettings.eightNoneOne(config.baud()),
                      BusTiming.defaults().withFrameGap(Duration.ZERO));
-             TcpEcho echo = new TcpEcho();
+             TcpEcho echo = new TcpEcho(64, 64);
              XVSMRuntime provider = XVSMRuntime.using(RemoteSpace.open(server.uri()), "robot-pc", true)) {
             CountingBumper hardware = new CountingBumper(new BumperModuleProxy(bus, 2, "Bumper"));
             XVSMBumperModuleLocal local = new XVSMBumperModuleLocal(provider, "Robot", "Bumper", hardware, false);
@@ -278,78 +273,5 @@ public final class RuntimeBenchmark {
         Arrays.sort(sorted);
         int middle = sorted.length / 2;
         return sorted.length % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2;
-    }
-
-    /** Counts hardware reads. */
-    private static final class CountingBumper implements BumperModule {
-        final AtomicInteger reads = new AtomicInteger();
-        private final BumperModule hardware;
-
-        CountingBumper(BumperModule hardware) {
-            this.hardware = hardware;
-        }
-
-        @Override
-        public int getAllBumper() {
-            reads.incrementAndGet();
-            return hardware.getAllBumper();
-        }
-
-        @Override
-        public boolean getSingleBumper(int bumperNumber) {
-            reads.incrementAndGet();
-            return hardware.getSingleBumper(bumperNumber);
-        }
-    }
-
-    /** A loopback TCP peer echoing 64-byte messages (about a small request tuple's size), Nagle off. */
-    private static final class TcpEcho implements AutoCloseable {
-
-        private static final int SIZE = 64;
-        private final ServerSocket server;
-        private final Socket client;
-        private final InputStream in;
-        private final OutputStream out;
-        private final byte[] message = new byte[SIZE];
-
-        TcpEcho() throws IOException {
-            server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
-            Thread peer = new Thread(this::serve, "tcp-echo");
-            peer.setDaemon(true);
-            peer.start();
-            client = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort());
-            client.setTcpNoDelay(true);
-            in = client.getInputStream();
-            out = client.getOutputStream();
-        }
-
-        private void serve() {
-            try (Socket socket = server.accept()) {
-                socket.setTcpNoDelay(true);
-                InputStream peerIn = socket.getInputStream();
-                OutputStream peerOut = socket.getOutputStream();
-                byte[] buffer = new byte[SIZE];
-                while (peerIn.readNBytes(buffer, 0, SIZE) == SIZE) {
-                    peerOut.write(buffer);
-                    peerOut.flush();
-                }
-            } catch (IOException e) {
-                // the benchmark is over
-            }
-        }
-
-        void roundTrip() throws IOException {
-            out.write(message);
-            out.flush();
-            if (in.readNBytes(message, 0, SIZE) != SIZE) {
-                throw new IOException("echo peer closed");
-            }
-        }
-
-        @Override
-        public void close() throws IOException {
-            client.close();
-            server.close();
-        }
     }
 }

@@ -70,8 +70,8 @@ final class XVSMWorld implements AutoCloseable {
 
     /**
      * No frame gap on a simulator link. The reply timeout is generous: with 80 busy threads on 2 cores the
-     * simulator can be slow to answer, and Modbus RTU cannot tell a reply that comes after its timeout from the
-     * reply to the next request (no transaction ids), so a too-short timeout would show up as a wrong answer.
+     * simulator can be slow to answer, and every timeout makes the next call to that module wait out the
+     * master's late-reply window (RtuMaster discards replies that come after their request timed out).
      */
     static final BusTiming BUS_TIMING = BusTiming.defaults().withResponseTimeout(Duration.ofMillis(250))
             .withAttempts(2).withFrameGap(Duration.ZERO).withServoMoveTimeout(Duration.ofSeconds(3));
