@@ -1,11 +1,6 @@
 package robotworld.space.remote;
 
-import java.io.DataInputStream;
-import java.io.DataOutputStream;
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -33,69 +28,79 @@ import robotworld.space.Subscription;
 import robotworld.space.Timeout;
 import robotworld.space.Tuple;
 import robotworld.space.server.SpaceServer;
+import robotworld.testsupport.CpuPlacement;
+import robotworld.testsupport.TcpEcho;
 
 /**
  * Remote space latencies next to a raw TCP loopback round trip measured in the same run: a write+take cycle, the
  * request/answer cycle of a remote module call, notification latency, one trivial request with this client and
  * with {@code java.net.http.HttpClient}, and 50 concurrent clients. Each figure is the median over several
  * timed runs (after warm-up) of that run's percentile; each run is paired with a TCP batch measured just before
- * it, and the "x TCP" column is the median of those per-run ratios. Run with {@code ./antw bench-remote}.
+ * it, and the "x TCP" column is the median of those per-run ratios. The latency part runs twice: in a child JVM
+ * with every thread on one CPU, and with threads placed by the OS (see {@link CpuPlacement} for why). Run with
+ * {@code ./antw bench-remote}; argument {@code latency} skips the concurrent clients.
  */
 public final class RemoteSpaceBenchmark {
 
     private static final int RUNS = Integer.getInteger("bench.runs", 5);
     private static final int ROUND_TRIPS = Integer.getInteger("bench.roundTrips", 3_000);
     private static final int CLIENTS = Integer.getInteger("bench.clients", 50);
+    private static final double TARGET_RATIO = 8.0;
     private static final long CONCURRENT_MILLIS = Long.getLong("bench.concurrentMillis", 3_000);
 
     private RemoteSpaceBenchmark() {
     }
 
     public static void main(String[] args) throws Exception {
-        System.out.printf("remote space benchmark: %d runs, %d round trips per run, %d concurrent clients; %s, %d cores%n",
-                RUNS, ROUND_TRIPS, CLIENTS, System.getProperty("java.vm.version"),
-                Runtime.getRuntime().availableProcessors());
+        boolean latencyOnly = Arrays.asList(args).contains("latency");
+        if (!CpuPlacement.isConfined()) {
+            System.out.printf("remote space benchmark: %d runs, %d round trips per run, %d concurrent clients; %s,"
+                    + " %d cores%n", RUNS, ROUND_TRIPS, CLIENTS, System.getProperty("java.vm.version"),
+                    Runtime.getRuntime().availableProcessors());
+            if (!latencyOnly) {
+                CpuPlacement.runConfined(RemoteSpaceBenchmark.class, "latency");
+            }
+        }
         try (SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0));
-             EchoServer echo = new EchoServer()) {
+             TcpEcho echo = new TcpEcho(16, 16)) {
             URI uri = server.uri();
+            System.out.printf("%nLatency, %s:%n", CpuPlacement.describe());
             List<Row> rows = new ArrayList<>();
             warmUp(uri, echo);
             Row tcp = measure("raw TCP loopback round trip (16-byte echo)", echo, () -> tcpRoundTrips(echo));
             rows.add(tcp);
             rows.add(measure("remote write+take cycle (2 requests)", echo, () -> writeTakeCycles(uri)));
-            rows.add(measure("request/answer cycle, separate write and take (4 requests)", echo,
+            rows.add(measure("request/answer cycle, one request per operation (A 2, B 2)", echo,
                     () -> requestAnswerCycles(uri, false)));
-            Row call = measure("request/answer cycle of a remote module call (writeThenTake)", echo,
+            Row call = measure("request/answer cycle of a remote module call (A 1, B 1)", echo,
                     () -> requestAnswerCycles(uri, true));
             rows.add(call);
-            rows.add(measure("notification latency (write call to listener)", echo, () -> notificationLatencies(uri)));
+            Row notification = measure("notification latency (write call to listener)", echo,
+                    () -> notificationLatencies(uri));
+            rows.add(notification);
             rows.add(measure("one trivial request (describe), this client", echo, () -> describeCalls(uri)));
             rows.add(measure("one trivial request (describe), java.net.http.HttpClient", echo,
                     () -> jdkHttpCalls(uri)));
             print(rows);
-            System.out.printf("%nrequest/answer p50 = %.1f x the TCP round trip measured just before it, median of"
-                    + " %d runs (target <= 8); notification p50 = %.0f us (target <= 300)%n", call.ratio(), RUNS,
-                    rows.get(4).p50());
-            concurrentClients(uri);
+            System.out.printf("%n%s: request/answer p50 = %.1f x the TCP round trip measured just before it, median"
+                    + " of %d runs (target <= %.0f: %s); notification p50 = %.0f us (target <= 300: %s)%n",
+                    CpuPlacement.describe(), call.ratio(), RUNS, TARGET_RATIO,
+                    call.ratio() <= TARGET_RATIO ? "met" : "NOT met", notification.p50(),
+                    notification.p50() <= 300 ? "met" : "NOT met");
+            if (!latencyOnly) {
+                concurrentClients(uri);
+            }
         }
     }
 
     // ---- scenarios: each returns the latency samples of one run, in nanoseconds ----
 
-    private static long[] tcpRoundTrips(EchoServer echo) throws IOException {
+    private static long[] tcpRoundTrips(TcpEcho echo) throws IOException {
         long[] samples = new long[ROUND_TRIPS * 4];
-        try (Socket socket = new Socket(InetAddress.getLoopbackAddress(), echo.port())) {
-            socket.setTcpNoDelay(true);
-            DataOutputStream out = new DataOutputStream(socket.getOutputStream());
-            DataInputStream in = new DataInputStream(socket.getInputStream());
-            byte[] message = new byte[16];
-            for (int i = 0; i < samples.length; i++) {
-                long start = System.nanoTime();
-                out.write(message);
-                out.flush();
-                in.readFully(message);
-                samples[i] = System.nanoTime() - start;
-            }
+        for (int i = 0; i < samples.length; i++) {
+            long start = System.nanoTime();
+            echo.roundTrip();
+            samples[i] = System.nanoTime() - start;
         }
         return samples;
     }
@@ -118,8 +123,9 @@ public final class RemoteSpaceBenchmark {
     /**
      * Client A writes {@code <A, i>} to a FIFO REQUEST container; client B, blocked in a take, receives it and
      * shifts the answer under A's key into a LIFO+KEY ANSWER container; A, blocked in a take of its key, receives it.
-     * With {@code composite}, A sends its write and its take in one request ({@code writeThenTake}), as a remote
-     * module call does; otherwise as two requests, the take sent once the write is answered.
+     * With {@code composite}, both sides do what the XVSM proxies do: A sends its write and its take in one request
+     * ({@code writeThenTake}), B its shift and its next take ({@code shiftThenTake}). Otherwise each operation is a
+     * request of its own, each take sent once the write or shift before it is answered.
      */
     private static long[] requestAnswerCycles(URI uri, boolean composite) throws Exception {
         try (RemoteSpace a = RemoteSpace.open(uri); RemoteSpace b = RemoteSpace.open(uri)) {
@@ -127,13 +133,15 @@ public final class RemoteSpaceBenchmark {
             ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQUEST" + suffix));
             ContainerRef answers = a.createContainer(ContainerSpec.of(Order.LIFO).withKeyView().named("ANSWER" + suffix));
             Thread module = new Thread(() -> {
-                while (true) {
-                    Tuple request = (Tuple) b.take(requests, Timeout.INFINITE).get(0);
-                    if (request.arity() == 0) {
-                        return;
+                Tuple request = (Tuple) b.take(requests, Timeout.INFINITE).get(0);
+                while (request.arity() != 0) {
+                    List<Item> answer = List.of(Item.keyed(request.stringAt(0), Tuple.of(request.longAt(1) + 1)));
+                    if (composite) {
+                        request = (Tuple) b.shiftThenTake(answers, answer, requests, Timeout.INFINITE).get(0);
+                    } else {
+                        b.shift(answers, Timeout.TRY_ONCE, answer);
+                        request = (Tuple) b.take(requests, Timeout.INFINITE).get(0);
                     }
-                    b.shift(answers, Timeout.TRY_ONCE, List.of(Item.keyed(request.stringAt(0),
-                            Tuple.of(request.longAt(1) + 1))));
                 }
             }, "bench-module");
             module.start();
@@ -301,7 +309,7 @@ public final class RemoteSpaceBenchmark {
     private record Row(String name, double p50, double p99, double ratio, List<Double> runP50s, List<Double> tcpP50s) {
     }
 
-    private static void warmUp(URI uri, EchoServer echo) throws Exception {
+    private static void warmUp(URI uri, TcpEcho echo) throws Exception {
         long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.getLong("bench.warmupSeconds", 8));
         while (System.nanoTime() < until) {
             tcpRoundTrips(echo);
@@ -316,7 +324,7 @@ public final class RemoteSpaceBenchmark {
      * Runs a scenario {@link #RUNS} times, each right after a batch of TCP round trips, so that each ratio compares
      * figures taken under the same conditions (the echo's own latency varies between runs on a virtual machine).
      */
-    private static Row measure(String name, EchoServer echo, Scenario scenario) throws Exception {
+    private static Row measure(String name, TcpEcho echo, Scenario scenario) throws Exception {
         List<Double> p50s = new ArrayList<>();
         List<Double> p99s = new ArrayList<>();
         List<Double> tcpP50s = new ArrayList<>();
@@ -360,53 +368,5 @@ public final class RemoteSpaceBenchmark {
         List<Double> sorted = new ArrayList<>(values);
         sorted.sort(Double::compare);
         return sorted.get(sorted.size() / 2);
-    }
-
-    /** A tiny blocking echo server: the raw round trip the HTTP figures are compared with. */
-    private static final class EchoServer implements AutoCloseable {
-        private final ServerSocket socket;
-
-        EchoServer() throws IOException {
-            socket = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
-            Thread acceptor = new Thread(() -> {
-                while (!socket.isClosed()) {
-                    try {
-                        Socket connection = socket.accept();
-                        connection.setTcpNoDelay(true);
-                        Thread echo = new Thread(() -> echo(connection), "bench-echo");
-                        echo.setDaemon(true);
-                        echo.start();
-                    } catch (IOException closed) {
-                        return;
-                    }
-                }
-            }, "bench-echo-accept");
-            acceptor.setDaemon(true);
-            acceptor.start();
-        }
-
-        private static void echo(Socket connection) {
-            try (connection) {
-                byte[] buffer = new byte[16];
-                DataInputStream in = new DataInputStream(connection.getInputStream());
-                var out = connection.getOutputStream();
-                while (true) {
-                    in.readFully(buffer);
-                    out.write(buffer);
-                    out.flush();
-                }
-            } catch (IOException done) {
-                // client finished
-            }
-        }
-
-        int port() {
-            return socket.getLocalPort();
-        }
-
-        @Override
-        public void close() throws IOException {
-            socket.close();
-        }
     }
 }
