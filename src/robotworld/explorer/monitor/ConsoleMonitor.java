@@ -56,10 +56,11 @@ public final class ConsoleMonitor implements AutoCloseable {
         watchers.forEach(AnswerWatcher::close);
     }
 
-    /** The line for one answer. */
+    /** The line for one answer; {@code when} null for one found when monitoring started. */
     static String line(Instant when, MonitoredModule module, CallTuple answer) {
-        return String.format(Locale.ROOT, "%s  %-18s %-18s %-22s %s  (%s)",
-                TIME.format(LocalTime.ofInstant(when, ZoneId.systemDefault())), module.participant(),
+        return String.format(Locale.ROOT, "%-12s  %-18s %-18s %-22s %s  (%s)",
+                when == null ? "earlier" : TIME.format(LocalTime.ofInstant(when, ZoneId.systemDefault())),
+                module.participant(),
                 module.moduleName(), AnswerText.function(answer), AnswerText.value(answer), AnswerText.host(answer));
     }
 
@@ -79,6 +80,11 @@ public final class ConsoleMonitor implements AutoCloseable {
         @Override
         public void answer(CallTuple answer, Instant when) {
             print(line(when, module, answer));
+        }
+
+        @Override
+        public void earlier(CallTuple answer) {
+            print(line(null, module, answer));
         }
 
         @Override

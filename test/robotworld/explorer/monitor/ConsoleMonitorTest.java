@@ -11,8 +11,12 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import robotworld.description.DescriptionLoader;
 import robotworld.explorer.cli.Rwe;
+import robotworld.space.Capi;
+import robotworld.space.Selector;
+import robotworld.space.Timeout;
 import robotworld.xvsm.XVSMBumperModuleLocal;
 import robotworld.xvsm.XVSMBumperModuleRemote;
+import robotworld.xvsm.XVSMModule;
 import robotworld.xvsm.XVSMRuntime;
 import robotworld.xvsm.XVSMX10ApplianceModuleLocal;
 import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
@@ -41,6 +45,30 @@ class ConsoleMonitorTest {
         assertTrue(lines[0].matches("\\d\\d:\\d\\d:\\d\\d\\.\\d{3}  DimRoom +Lamp +on +\\(laptop\\)"), lines[0]);
         assertTrue(lines[1].matches(".*CaterpillarRobot +Bumper-Sensor +getSingleBumper +<4, 1>  \\(laptop\\)"),
                 lines[1]);
+    }
+
+    @Test
+    void showsTheLastCallsMadeBeforeMonitoringStarted() throws Exception {
+        StringWriter text = new StringWriter();
+        try (MonitoredSpace space = new MonitoredSpace()) {
+            XVSMRuntime room = space.host("room-pc");
+            XVSMRuntime laptop = space.host("laptop");
+            XVSMX10ApplianceModuleLocal lamp = new XVSMX10ApplianceModuleLocal(room, "DimRoom", "Lamp",
+                    new FakeHardware.Appliance());
+            lamp.on(); // a local call, published under the host's own name
+            Capi connection = space.connection();
+            connection.read(connection.lookupContainer(XVSMModule.answerContainerName("DimRoom", "Lamp")),
+                    Timeout.ofMillis(5_000), Selector.lifo()); // published (asynchronously)
+            MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5()));
+            try (ConsoleMonitor monitor = new ConsoleMonitor(world, space.connection(), new PrintWriter(text))) {
+                new XVSMX10ApplianceModuleRemote(laptop, "DimRoom", "Lamp").off();
+                waitFor(() -> text.toString().lines().count() >= 2);
+            }
+        }
+        String[] lines = text.toString().split("\n");
+        assertEquals(2, lines.length, text.toString());
+        assertTrue(lines[0].matches("earlier +DimRoom +Lamp +on +\\(room-pc\\)"), lines[0]);
+        assertTrue(lines[1].matches("\\d\\d:\\d\\d:\\d\\d\\.\\d{3}  DimRoom +Lamp +off +\\(laptop\\)"), lines[1]);
     }
 
     @Test

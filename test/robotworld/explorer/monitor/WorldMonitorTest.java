@@ -214,7 +214,32 @@ class WorldMonitorTest {
         assertTrue(onEdt(() -> panel.freshness().getText()).contains("for room-pc"));
     }
 
+    @Test
+    void aMonitorStartedLaterShowsTheLastKnownState() throws Exception {
+        XVSMX10ApplianceModuleLocal local = new XVSMX10ApplianceModuleLocal(room, ROOM, "Lamp",
+                new FakeHardware.Appliance());
+        local.on();
+        X10ApplianceModulePanel first = panel(X10ApplianceModulePanel.class);
+        eventually("published", () -> first.indicator().state() == OnOffIndicator.State.ON);
+
+        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.everyModuleType(folder)));
+        WorldMonitor late = onEdt(() -> new WorldMonitor(world, space.connection(), new MonitorLoader()));
+        try {
+            X10ApplianceModulePanel panel = panel(late, X10ApplianceModulePanel.class);
+            eventually("the late monitor shows ON", () -> panel.indicator().state() == OnOffIndicator.State.ON);
+            assertEquals("reported before monitoring started for room-pc", onEdt(() -> panel.freshness().getText()));
+            assertEquals(FreshnessLabel.NO_REPORT, onEdt(() -> panel(late, BumperModulePanel.class).freshness()
+                    .getText()), "nothing was published for the bumper");
+        } finally {
+            onEdt(late::close);
+        }
+    }
+
     private <P> P panel(Class<P> type) {
+        return panel(monitor, type);
+    }
+
+    private static <P> P panel(WorldMonitor monitor, Class<P> type) {
         return monitor.monitors().stream().map(Monitor::getPanel).filter(type::isInstance).map(type::cast)
                 .findFirst().orElseThrow();
     }

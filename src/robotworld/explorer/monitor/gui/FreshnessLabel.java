@@ -23,6 +23,8 @@ public final class FreshnessLabel extends JLabel {
     private final Timer refresh = new Timer(REFRESH_MILLIS, event -> render());
     private Instant lastReport;
     private String host;
+    /** A report found when monitoring started, and none since. */
+    private boolean earlier;
 
     public FreshnessLabel() {
         super(NO_REPORT);
@@ -34,6 +36,15 @@ public final class FreshnessLabel extends JLabel {
         this.lastReport = when;
         this.host = byHost;
         render();
+    }
+
+    /** The module reported before monitoring started (when is unknown), answering {@code byHost}. */
+    public void reportedEarlier(String byHost) {
+        if (lastReport == null) {
+            this.earlier = true;
+            this.host = byHost;
+            render();
+        }
     }
 
     /** When the module last reported, or null. */
@@ -55,7 +66,8 @@ public final class FreshnessLabel extends JLabel {
 
     private void render() {
         if (lastReport == null) {
-            setText(NO_REPORT);
+            setText(earlier ? "reported before monitoring started" + (host == null ? "" : " for " + host)
+                    : NO_REPORT);
             return;
         }
         long seconds = Math.max(0, Duration.between(lastReport, Instant.now()).toSeconds());

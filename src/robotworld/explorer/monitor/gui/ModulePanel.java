@@ -48,6 +48,11 @@ public abstract class ModulePanel extends JPanel {
         freshness.reported(when, host);
     }
 
+    /** The module reported before monitoring started (time unknown), answering {@code host}. */
+    public void reportedEarlier(String host) {
+        freshness.reportedEarlier(host);
+    }
+
     /** Shows a failed call until the next good report. */
     public void showProblem(String text) {
         problem.setText(text);

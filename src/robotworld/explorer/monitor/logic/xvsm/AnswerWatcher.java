@@ -13,6 +13,7 @@ import robotworld.space.NotificationListener;
 import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
 import robotworld.space.Order;
+import robotworld.space.Selector;
 import robotworld.space.SpaceException;
 import robotworld.space.Subscription;
 import robotworld.space.SubscriptionEnd;
@@ -26,8 +27,12 @@ import robotworld.xvsm.XVSMModule;
  * shifted into it to an {@link AnswerListener}. Every local call the module's host publishes and every answered
  * remote call is such a shift (docs/runtime.md), so this sees all activity of the module.
  *
- * <p>The container is looked up or created, so monitoring may start before the module's program. A
- * subscription that overflowed or whose container was destroyed is renewed; only a closed space ends watching.
+ * <p>The container is looked up or created, so monitoring may start before the module's program. What it
+ * already holds (the latest published call of each host, answers not yet collected) is handed over first, oldest
+ * first, as {@link AnswerListener#earlier}: a monitor started late still shows the module's last known state. An
+ * answer arriving in the moment between that read and the subscription can be missed; the next one brings the
+ * monitor up to date. A subscription that overflowed or whose container was destroyed is renewed; only a closed
+ * space ends watching.
  */
 public final class AnswerWatcher implements AutoCloseable {
 
@@ -51,7 +56,19 @@ public final class AnswerWatcher implements AutoCloseable {
         this.spec = ContainerSpec.of(Order.LIFO).withKeyView().unbounded()
                 .named(XVSMModule.answerContainerName(participant, moduleName));
         this.listener = listener;
+        handOverEarlierAnswers();
         subscribe();
+    }
+
+    private void handOverEarlierAnswers() {
+        ContainerRef answers = space.lookupOrCreateContainer(spec);
+        for (Entry entry : space.read(answers, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL))) {
+            try {
+                listener.earlier(CallTuple.parse(entry));
+            } catch (MalformedCallException e) {
+                LOG.debug("{}: ignoring an entry that is not an answer: {}", spec.name(), entry);
+            }
+        }
     }
 
     /** The ANSWER container's name. */

@@ -10,7 +10,7 @@ import robotworld.xvsm.CallTuple;
 
 /**
  * What every XVSM monitor does (thesis table 3): watch the module's ANSWER container and, on the Swing thread,
- * mark the panel fresh, show error answers as problems and hand good answers to {@link #show}. A subclass only
+ * show what it already held (the module's last known state), then mark the panel fresh on every answer, show error answers as problems and hand good answers to {@link #show}. A subclass only
  * says how an answer of its module type changes its panel. Create on the Swing thread: the first answer is
  * shown only after construction has finished.
  *
@@ -34,6 +34,11 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
             @Override
             public void answer(CallTuple answer, Instant when) {
                 SwingUtilities.invokeLater(() -> display(answer, when));
+            }
+
+            @Override
+            public void earlier(CallTuple answer) {
+                SwingUtilities.invokeLater(() -> display(answer, null));
             }
 
             @Override
@@ -65,8 +70,13 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
         watcher.close();
     }
 
+    /** Shows an answer that arrived at {@code when}, or (null) one found when monitoring started. */
     private void display(CallTuple answer, Instant when) {
-        panel.reported(when, AnswerText.host(answer));
+        if (when == null) {
+            panel.reportedEarlier(AnswerText.host(answer));
+        } else {
+            panel.reported(when, AnswerText.host(answer));
+        }
         if (AnswerText.isError(answer)) {
             panel.showProblem(AnswerText.function(answer) + ": " + AnswerText.errorMessage(answer));
             return;
