@@ -23,8 +23,6 @@ import robotworld.space.server.SpaceServer;
                 "Listens on loopback unless --bind says otherwise. Runs until Ctrl-C."})
 final class SpaceCommand implements Callable<Integer> {
 
-    private static final String JETTY_LOG_LEVEL = "org.eclipse.jetty.LEVEL";
-
     @Option(names = "--port", paramLabel = "P", defaultValue = "" + SpaceServer.Options.DEFAULT_PORT,
             description = "TCP port (default: ${DEFAULT-VALUE}; 0 picks a free one)")
     private int port;
@@ -43,9 +41,6 @@ final class SpaceCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         PrintWriter out = spec.commandLine().getOut();
-        if (System.getProperty(JETTY_LOG_LEVEL) == null) {
-            System.setProperty(JETTY_LOG_LEVEL, "WARN"); // Jetty's start-up chatter is not for this console
-        }
         SpaceServer.Options options = SpaceServer.Options.defaults().port(port).bindAddress(bind);
         if (tokenFile != null) {
             options = options.token(readToken(tokenFile));
