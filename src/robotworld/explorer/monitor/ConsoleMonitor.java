@@ -37,7 +37,7 @@ public final class ConsoleMonitor implements AutoCloseable {
             for (MonitoredParticipant participant : world.participants()) {
                 for (MonitoredModule module : participant.modules()) {
                     watchers.add(new AnswerWatcher(space, module.participant(), module.moduleName(),
-                            new Printer(module)));
+                            new Printer(module)).start());
                 }
             }
         } catch (RuntimeException e) {

@@ -1,5 +1,6 @@
 package robotworld.explorer.monitor;
 
+import java.time.Duration;
 import javax.swing.JComponent;
 
 /**
@@ -13,6 +14,17 @@ public interface Monitor extends AutoCloseable {
 
     /** The panel showing the module's state; the same component on every call. */
     JComponent getPanel();
+
+    /**
+     * Waits until the monitor watches its module: a monitor may start watching in the background, so that the
+     * Swing thread never waits for the network. Not on the Swing thread. Default: already watching.
+     *
+     * @return whether it watches (false: its start failed, which its panel shows, or took longer than
+     *         {@code timeout})
+     */
+    default boolean awaitWatching(Duration timeout) throws InterruptedException {
+        return true;
+    }
 
     /** Stops watching (cancels subscriptions); idempotent. The panel stays as it was. */
     @Override

@@ -1,5 +1,6 @@
 package robotworld.explorer.monitor;
 
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import javax.swing.JComponent;
@@ -46,6 +47,21 @@ public final class WorldMonitor implements AutoCloseable {
     /** The monitors, one per module. */
     public List<Monitor> monitors() {
         return List.copyOf(monitors);
+    }
+
+    /**
+     * Waits until every monitor watches its module (they start in the background). Not on the Swing thread.
+     *
+     * @return whether all do within {@code timeout} (a monitor that cannot watch says why on its panel)
+     */
+    public boolean awaitWatching(Duration timeout) throws InterruptedException {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        for (Monitor monitor : List.copyOf(monitors)) {
+            if (!monitor.awaitWatching(Duration.ofNanos(Math.max(0, deadline - System.nanoTime())))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Stops every monitor and closes the windows. */

@@ -1,5 +1,7 @@
 package robotworld.explorer.monitor;
 
+import java.time.Duration;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -55,6 +57,7 @@ class MonitorLoaderTest {
             Monitor monitor = onEdt(() -> loader.load(gripper, space));
             try {
                 assertInstanceOf(XVSMGripperModuleMonitor.class, monitor);
+                assertTrue(monitor.awaitWatching(Duration.ofSeconds(10)), "the monitor watches");
                 robot.own(new XVSMGripperModuleLocal(robot, "CaterpillarRobot", "Gripper", hardware));
                 laptop.own(new XVSMGripperModuleRemote(laptop, "CaterpillarRobot", "Gripper")).grip(70);
                 XVSMGripperModuleMonitor.GripperPanel panel = (XVSMGripperModuleMonitor.GripperPanel) monitor.getPanel();

@@ -1,6 +1,7 @@
 package robotworld.explorer.monitor;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robotworld.explorer.gui.GuiTesting.eventually;
 import static robotworld.explorer.gui.GuiTesting.onEdt;
@@ -9,6 +10,7 @@ import static robotworld.explorer.monitor.MonitorTestWorlds.ROBOT;
 import static robotworld.explorer.monitor.MonitorTestWorlds.ROOM;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -32,6 +34,7 @@ import robotworld.explorer.monitor.gui.ParticipantWindow;
 import robotworld.explorer.monitor.gui.ServoModulePanel;
 import robotworld.explorer.monitor.gui.X10ApplianceModulePanel;
 import robotworld.explorer.monitor.gui.X10LampModulePanel;
+import robotworld.space.Capi;
 import robotworld.xvsm.XVSMBumperModuleLocal;
 import robotworld.xvsm.XVSMBumperModuleRemote;
 import robotworld.xvsm.XVSMIRDistanceModuleLocal;
@@ -81,6 +84,7 @@ class WorldMonitorTest {
             opened.show();
             return opened;
         });
+        assertTrue(monitor.awaitWatching(Duration.ofSeconds(10)), "every monitor watches its module");
     }
 
     @AfterEach
@@ -225,6 +229,7 @@ class WorldMonitorTest {
         MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.everyModuleType(folder)));
         WorldMonitor late = onEdt(() -> new WorldMonitor(world, space.connection(), new MonitorLoader()));
         try {
+            assertTrue(late.awaitWatching(Duration.ofSeconds(10)));
             X10ApplianceModulePanel panel = panel(late, X10ApplianceModulePanel.class);
             eventually("the late monitor shows ON", () -> panel.indicator().state() == OnOffIndicator.State.ON);
             assertEquals("reported before monitoring started for room-pc", onEdt(() -> panel.freshness().getText()));
@@ -232,6 +237,22 @@ class WorldMonitorTest {
                     .getText()), "nothing was published for the bumper");
         } finally {
             onEdt(late::close);
+        }
+    }
+
+    @Test
+    void aMonitorThatCannotWatchSaysSoOnItsPanelAndTheWindowStaysResponsive() throws Exception {
+        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.everyModuleType(folder)));
+        Capi closed = MonitorSpace.open(space.url());
+        closed.close(); // every operation on it fails at once
+        WorldMonitor broken = onEdt(() -> new WorldMonitor(world, closed, new MonitorLoader()));
+        try {
+            assertFalse(broken.awaitWatching(Duration.ofSeconds(10)));
+            BumperModulePanel panel = panel(broken, BumperModulePanel.class);
+            eventually("the panel says why", () -> panel.problemText().startsWith("not watching: cannot watch ")
+                    && panel.problemText().contains("Bumper-Sensor"));
+        } finally {
+            onEdt(broken::close);
         }
     }
 

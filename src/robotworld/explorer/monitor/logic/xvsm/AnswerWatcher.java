@@ -1,7 +1,12 @@
 package robotworld.explorer.monitor.logic.xvsm;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.util.Set;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robotworld.space.Capi;
@@ -33,6 +38,9 @@ import robotworld.xvsm.XVSMModule;
  * answer arriving in the moment between that read and the subscription can be missed; the next one brings the
  * monitor up to date. A subscription that overflowed or whose container was destroyed is renewed; only a closed
  * space ends watching.
+ *
+ * <p>Watching starts with {@link #start()} (on the calling thread: it talks to the space) or
+ * {@link #startInBackground()} (for the Swing thread, which must not wait for the network).
  */
 public final class AnswerWatcher implements AutoCloseable {
 
@@ -42,22 +50,69 @@ public final class AnswerWatcher implements AutoCloseable {
     private final Capi space;
     private final ContainerSpec spec;
     private final AnswerListener listener;
+    private final CountDownLatch startAttempted = new CountDownLatch(1);
+    private volatile boolean watching;
     private Subscription subscription;
     private boolean closed;
 
-    /**
-     * Starts watching.
-     *
-     * @throws SpaceException when the space cannot be reached
-     */
+    /** A watcher of one module's answers; it watches once started. */
     public AnswerWatcher(Capi space, String participant, String moduleName, AnswerListener listener) {
         this.space = space;
         // the spec XVSMModule's containers are created with (robotworld.xvsm.ModuleContainers): LIFO, KEY view
         this.spec = ContainerSpec.of(Order.LIFO).withKeyView().unbounded()
                 .named(XVSMModule.answerContainerName(participant, moduleName));
         this.listener = listener;
-        handOverEarlierAnswers();
-        subscribe();
+    }
+
+    /**
+     * Hands over what the container holds, then subscribes; on this thread.
+     *
+     * @return this watcher
+     * @throws SpaceException when the space cannot be reached
+     */
+    public AnswerWatcher start() {
+        try {
+            handOverEarlierAnswers();
+            subscribe();
+            watching = true;
+            return this;
+        } finally {
+            startAttempted.countDown();
+        }
+    }
+
+    /**
+     * Starts on a background thread; a failure reaches the listener as {@link AnswerListener#stopped}.
+     *
+     * @return this watcher
+     */
+    public AnswerWatcher startInBackground() {
+        Starter.THREADS.execute(() -> {
+            try {
+                start();
+            } catch (SpaceException e) {
+                listener.stopped("cannot watch " + spec.name() + ": " + e.getMessage());
+            }
+        });
+        return this;
+    }
+
+    /**
+     * Waits until the start has been tried.
+     *
+     * @return whether this watcher watches (false: the start failed, or is still under way after {@code timeout})
+     */
+    public boolean awaitWatching(Duration timeout) throws InterruptedException {
+        return startAttempted.await(timeout.toMillis(), TimeUnit.MILLISECONDS) && watching;
+    }
+
+    /** The threads that start watchers in the background; daemons, so they never keep a program alive. */
+    private static final class Starter {
+        static final ExecutorService THREADS = Executors.newCachedThreadPool(task -> {
+            Thread thread = new Thread(task, "monitor-start");
+            thread.setDaemon(true);
+            return thread;
+        });
     }
 
     private void handOverEarlierAnswers() {

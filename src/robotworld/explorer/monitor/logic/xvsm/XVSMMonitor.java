@@ -1,5 +1,6 @@
 package robotworld.explorer.monitor.logic.xvsm;
 
+import java.time.Duration;
 import java.time.Instant;
 import javax.swing.SwingUtilities;
 import robotworld.explorer.monitor.Monitor;
@@ -23,9 +24,8 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
     private final AnswerWatcher watcher;
 
     /**
-     * Subscribes to the ANSWER container of {@code module} in {@code space}.
-     *
-     * @throws robotworld.space.SpaceException when the space cannot be reached
+     * Starts watching the ANSWER container of {@code module} in {@code space}, in the background (the Swing thread
+     * does not wait for the network); a failure is shown on the panel.
      */
     protected XVSMMonitor(MonitoredModule module, Capi space, P panel) {
         this.module = module;
@@ -43,9 +43,9 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
 
             @Override
             public void stopped(String why) {
-                SwingUtilities.invokeLater(() -> panel.showProblem("not watching any more: " + why));
+                SwingUtilities.invokeLater(() -> panel.showProblem("not watching: " + why));
             }
-        });
+        }).startInBackground();
     }
 
     /**
@@ -63,6 +63,11 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
     @Override
     public P getPanel() {
         return panel;
+    }
+
+    @Override
+    public boolean awaitWatching(Duration timeout) throws InterruptedException {
+        return watcher.awaitWatching(timeout);
     }
 
     @Override
