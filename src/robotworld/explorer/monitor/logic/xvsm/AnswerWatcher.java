@@ -72,9 +72,12 @@ public final class AnswerWatcher implements AutoCloseable {
      */
     public AnswerWatcher start() {
         try {
-            handOverEarlierAnswers();
-            subscribe();
-            watching = true;
+            ContainerRef answers = space.lookupOrCreateContainer(spec);
+            if (!isClosed()) {
+                handOverEarlierAnswers(answers);
+            }
+            subscribe(answers);
+            watching = !isClosed();
             return this;
         } finally {
             startAttempted.countDown();
@@ -90,7 +93,7 @@ public final class AnswerWatcher implements AutoCloseable {
         Starter.THREADS.execute(() -> {
             try {
                 start();
-            } catch (SpaceException e) {
+            } catch (RuntimeException e) { // a SpaceException, or an answer the listener choked on
                 listener.stopped("cannot watch " + spec.name() + ": " + e.getMessage());
             }
         });
@@ -115,8 +118,7 @@ public final class AnswerWatcher implements AutoCloseable {
         });
     }
 
-    private void handOverEarlierAnswers() {
-        ContainerRef answers = space.lookupOrCreateContainer(spec);
+    private void handOverEarlierAnswers(ContainerRef answers) {
         for (Entry entry : space.read(answers, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL))) {
             try {
                 listener.earlier(CallTuple.parse(entry));
@@ -131,11 +133,10 @@ public final class AnswerWatcher implements AutoCloseable {
         return spec.name();
     }
 
-    private synchronized void subscribe() {
+    private synchronized void subscribe(ContainerRef answers) {
         if (closed) {
             return;
         }
-        ContainerRef answers = space.lookupOrCreateContainer(spec);
         subscription = space.subscribe(answers, PUBLISHING, NotificationMode.INFINITE, Timeout.INFINITE,
                 new Forwarder());
     }
@@ -174,7 +175,7 @@ public final class AnswerWatcher implements AutoCloseable {
             }
             if (reason == SubscriptionEnd.OVERFLOWED || reason == SubscriptionEnd.CONTAINER_DESTROYED) {
                 try {
-                    subscribe(); // a few answers may be missed; the next one brings the panel up to date
+                    subscribe(space.lookupOrCreateContainer(spec)); // a few answers may be missed; the next one brings the panel up to date
                     return;
                 } catch (SpaceException e) {
                     listener.stopped("cannot watch " + spec.name() + " again: " + e.getMessage());

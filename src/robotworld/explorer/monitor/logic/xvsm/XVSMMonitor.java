@@ -11,9 +11,10 @@ import robotworld.xvsm.CallTuple;
 
 /**
  * What every XVSM monitor does (thesis table 3): watch the module's ANSWER container and, on the Swing thread,
- * show what it already held (the module's last known state), then mark the panel fresh on every answer, show error answers as problems and hand good answers to {@link #show}. A subclass only
- * says how an answer of its module type changes its panel. Create on the Swing thread: the first answer is
- * shown only after construction has finished.
+ * show what it already held (the module's last known state), then mark the panel fresh on every answer, show
+ * error answers as problems and hand good answers to {@link #show}. A subclass only says how an answer of its
+ * module type changes its panel. Create on the Swing thread: the first answer is shown only after construction
+ * has finished.
  *
  * @param <P> the module's panel
  */
