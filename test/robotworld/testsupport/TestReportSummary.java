@@ -20,6 +20,8 @@ import org.w3c.dom.NodeList;
 public final class TestReportSummary {
 
     private static final int STACK_LINES = 12;
+    private static final int WIDTH = 150;
+    private static final int MESSAGE_LINES = 20;
 
     private int passed;
     private int failed;
@@ -80,7 +82,7 @@ public final class TestReportSummary {
         StringBuilder text = new StringBuilder("FAILED ").append(name).append('\n');
         String message = problem.getAttribute("message");
         if (!message.isEmpty()) {
-            text.append("    ").append(message.replace("\n", "\n    ")).append('\n');
+            text.append(readable(message, "    "));
         }
         // the exception line, then the frames in project code: that is where the reader needs to look
         String[] stack = problem.getTextContent().strip().split("\n");
@@ -89,9 +91,33 @@ public final class TestReportSummary {
             String line = stack[i].strip();
             boolean exceptionLine = i == 0 || line.startsWith("Caused by:");
             if (exceptionLine && message.isEmpty() || line.startsWith("at robotworld.")) {
-                text.append("      ").append(line).append('\n');
+                text.append(readable(line, "      "));
                 shown++;
             }
+        }
+        return text.toString();
+    }
+
+    /**
+     * A message as a reader can take it in: wrapped at {@link #WIDTH} columns, at most {@link #MESSAGE_LINES}
+     * lines (the full text stays in the XML report), every line indented.
+     */
+    static String readable(String message, String indent) {
+        List<String> lines = new ArrayList<>();
+        for (String line : message.strip().split("\r?\n")) {
+            while (line.length() > WIDTH) {
+                int cut = line.lastIndexOf(' ', WIDTH);
+                cut = cut < WIDTH / 2 ? WIDTH : cut;
+                lines.add(line.substring(0, cut));
+                line = line.substring(cut).stripLeading();
+            }
+            lines.add(line);
+        }
+        StringBuilder text = new StringBuilder();
+        lines.stream().limit(MESSAGE_LINES).forEach(line -> text.append(indent).append(line).append('\n'));
+        if (lines.size() > MESSAGE_LINES) {
+            text.append(indent).append("... ").append(lines.size() - MESSAGE_LINES)
+                    .append(" more lines in the test's XML report\n");
         }
         return text.toString();
     }
@@ -103,7 +129,7 @@ public final class TestReportSummary {
 
     private void print() {
         failures.forEach(System.out::print);
-        skipReasons.forEach((reason, count) -> System.out.println("skipped " + count + ": " + reason));
+        skipReasons.forEach((reason, count) -> System.out.print(readable("skipped " + count + ": " + reason, "")));
         if (passed + failed == 0) {
             System.out.println("no test ran");
         }

@@ -28,12 +28,15 @@ public final class GuiTesting {
     private GuiTesting() {
     }
 
-    /** Skips the test when there is no display (run the tests under Xvfb: {@code xvfb-run -a ./antw test}). */
+    /**
+     * Skips the test when there is no display. {@code ./antw test} gives the tests a virtual one (xvfb-run) when
+     * the machine has none and Xvfb is installed, or can be.
+     */
     public static void assumeDisplay() {
-        assumeFalse(GraphicsEnvironment.isHeadless(),
-                "no display (DISPLAY unset or java.awt.headless): GUI test skipped; run under xvfb-run to include it");
-        assumeTrue(DISPLAY_WORKS, "the display cannot be opened (a headless JRE without libawt_xawt?): GUI test"
-                + " skipped");
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display for the Swing tests: install Xvfb with 'sudo apt-get"
+                + " install xvfb xauth' and ./antw test runs them on a virtual display");
+        assumeTrue(DISPLAY_WORKS, "the display cannot be opened (a headless JRE without libawt_xawt?): install the"
+                + " full JRE, e.g. 'sudo apt-get install openjdk-17-jre'");
     }
 
     /** Whether windows can really be opened: a display may be set while the JRE lacks its X11 toolkit. */

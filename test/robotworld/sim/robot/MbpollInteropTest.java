@@ -2,12 +2,9 @@ package robotworld.sim.robot;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -19,6 +16,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import robotworld.bus.SocatPty;
 import robotworld.testsupport.ProjectFiles;
+import robotworld.testsupport.TestPeers;
 
 /**
  * The simulator checked by an independent Modbus RTU master: mbpoll (libmodbus) on one end of a socat pty pair,
@@ -45,8 +43,7 @@ class MbpollInteropTest {
 
     @BeforeAll
     static void needsMbpoll() {
-        assumeTrue(Files.isExecutable(Path.of("/usr/bin/mbpoll")) || onPath("mbpoll"),
-                "mbpoll is not installed (Debian package mbpoll; .ci/run installs it)");
+        TestPeers.requireCommand("mbpoll", "mbpoll");
     }
 
     @BeforeEach
@@ -136,14 +133,5 @@ class MbpollInteropTest {
         assertTrue(refused.output().contains("Illegal data value"), refused.output());
         Run absent = mbpoll(List.of("-a", "9", "-t", "1", "-r", "1"));
         assertTrue(absent.exitCode() != 0 && absent.output().contains("timed out"), absent.output());
-    }
-
-    private static boolean onPath(String program) {
-        for (String folder : System.getenv().getOrDefault("PATH", "").split(":")) {
-            if (!folder.isEmpty() && Files.isExecutable(Path.of(folder, program))) {
-                return true;
-            }
-        }
-        return false;
     }
 }
