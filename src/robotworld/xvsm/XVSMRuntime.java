@@ -1,8 +1,6 @@
 package robotworld.xvsm;
 
-import java.net.InetAddress;
 import java.net.URI;
-import java.net.UnknownHostException;
 import java.time.Duration;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -17,6 +15,7 @@ import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robotworld.core.HostNames;
 import robotworld.core.RuntimeSettings;
 import robotworld.space.Capi;
 import robotworld.space.remote.RemoteSpace;
@@ -308,11 +307,7 @@ public final class XVSMRuntime implements AutoCloseable {
     }
 
     private static String localHostName() {
-        try {
-            return InetAddress.getLocalHost().getHostName();
-        } catch (UnknownHostException e) {
-            return "localhost";
-        }
+        return HostNames.thisComputer();
     }
 
     private static boolean isBlank(String text) {

@@ -181,13 +181,19 @@ class SimulatedCm11aTest {
         Duration powerLine = Duration.ofMillis(30);
         try (SimulatedCm11a real = SimulatedCm11a.withDevices(Cm11aTiming.real(powerLine), "A3=appliance");
                 RawHost host = new RawHost(real.listen(0))) {
-            long start = System.nanoTime();
-            host.send("04 62").expect("66").send("00").expect("55");
-            double elapsedMs = (System.nanoTime() - start) / 1e6;
-            // 5 characters of 2.083 ms on the line (2 + 1 + 1 + 1) and one power-line transmission
+            // 5 characters of 2.083 ms on the line (2 + 1 + 1 + 1) and one power-line transmission: never faster.
+            // The upper bound only says "paced, not stalled": a busy machine may add scheduling delay (the exact
+            // figures are measured by ./antw bench-x10)
             double minimum = 5 * 2.0833 + 30;
-            assertTrue(elapsedMs >= minimum - 0.5 && elapsedMs < minimum + 25,
-                    "took " + elapsedMs + " ms, minimum " + minimum);
+            double fastest = Double.MAX_VALUE;
+            for (int i = 0; i < 3; i++) {
+                long start = System.nanoTime();
+                host.send("04 62").expect("66").send("00").expect("55");
+                double elapsedMs = (System.nanoTime() - start) / 1e6;
+                assertTrue(elapsedMs >= minimum - 0.5, "took " + elapsedMs + " ms, minimum " + minimum);
+                fastest = Math.min(fastest, elapsedMs);
+            }
+            assertTrue(fastest < minimum + 500, "fastest of 3 took " + fastest + " ms, minimum " + minimum);
         }
     }
 }

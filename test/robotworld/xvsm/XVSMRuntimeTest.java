@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.net.InetAddress;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -16,6 +15,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import robotworld.core.HostNames;
 import robotworld.space.Capi;
 import robotworld.space.EmbeddedSpace;
 import robotworld.space.SpaceClosedException;
@@ -65,7 +65,7 @@ class XVSMRuntimeTest {
     void withoutAHostNameTheComputersNameIsUsed() throws Exception {
         try (SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(100));
              XVSMRuntime runtime = XVSMRuntime.connect(server.uri().toString(), null)) {
-            assertEquals(InetAddress.getLocalHost().getHostName(), runtime.hostName());
+            assertEquals(HostNames.thisComputer(), runtime.hostName());
         }
     }
 

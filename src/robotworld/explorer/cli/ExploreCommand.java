@@ -2,7 +2,6 @@ package robotworld.explorer.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.net.InetAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -23,6 +22,7 @@ import robotworld.bus.explore.ExplorationResult;
 import robotworld.bus.explore.FoundModule;
 import robotworld.bus.explore.ModuleCatalog;
 import robotworld.bus.explore.RobotExplorer;
+import robotworld.core.HostNames;
 import robotworld.description.DescriptionError;
 import robotworld.description.DescriptionException;
 import robotworld.description.RobotWorldAssembler;
@@ -161,12 +161,8 @@ final class ExploreCommand implements Callable<Integer> {
 
     /** This computer's name if it can stand in a description, else localhost. */
     private static String localHostName() {
-        try {
-            String local = InetAddress.getLocalHost().getHostName();
-            return HOST.matcher(local).matches() && local.length() <= 253 ? local : "localhost";
-        } catch (IOException e) {
-            return "localhost";
-        }
+        String local = HostNames.thisComputer();
+        return HOST.matcher(local).matches() && local.length() <= 253 ? local : "localhost";
     }
 
     /** Feeds the progress bar and lists problems as they happen. */

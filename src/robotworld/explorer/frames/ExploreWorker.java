@@ -1,6 +1,5 @@
 package robotworld.explorer.frames;
 
-import java.net.InetAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -15,6 +14,7 @@ import robotworld.bus.explore.ExplorationResult;
 import robotworld.bus.explore.FoundModule;
 import robotworld.bus.explore.ModuleCatalog;
 import robotworld.bus.explore.RobotExplorer;
+import robotworld.core.HostNames;
 import robotworld.description.DescriptionException;
 import robotworld.description.RobotWorldAssembler;
 
@@ -88,12 +88,8 @@ final class ExploreWorker extends SwingWorker<String, String> {
     }
 
     private static String localHostName() {
-        try {
-            String name = InetAddress.getLocalHost().getHostName();
-            return name.matches("[A-Za-z0-9]([A-Za-z0-9.\\-]*[A-Za-z0-9])?") ? name : "localhost";
-        } catch (java.io.IOException e) {
-            return "localhost";
-        }
+        String name = HostNames.thisComputer();
+        return name.matches("[A-Za-z0-9]([A-Za-z0-9.\\-]*[A-Za-z0-9])?") ? name : "localhost";
     }
 
     /** Feeds progress and log lines from the exploring thread. */

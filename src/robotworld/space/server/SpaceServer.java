@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
-
 import org.eclipse.jetty.ee10.servlet.ServletContextHandler;
 import org.eclipse.jetty.ee10.servlet.ServletHolder;
 import org.eclipse.jetty.server.HttpConfiguration;
@@ -16,7 +15,7 @@ import org.eclipse.jetty.server.HttpConnectionFactory;
 import org.eclipse.jetty.server.Server;
 import org.eclipse.jetty.server.ServerConnector;
 import org.eclipse.jetty.util.thread.QueuedThreadPool;
-
+import robotworld.core.HostNames;
 import robotworld.space.EmbeddedSpace;
 import robotworld.space.SpaceException;
 import robotworld.space.wire.CrefMapping;
@@ -136,7 +135,7 @@ public final class SpaceServer implements AutoCloseable {
             try {
                 host = InetAddress.getLocalHost().getCanonicalHostName();
             } catch (UnknownHostException e) {
-                host = "localhost";
+                host = HostNames.thisComputer(); // the kernel's name: others may resolve it even if we cannot
             }
         }
         return host.contains(":") ? "[" + host + "]" : host;
