@@ -179,7 +179,10 @@ public final class RS485Bus implements Closeable {
         return Duration.ofNanos(rtu.t35Nanos() + rtu.characterNanos()).plus(timing.scanAllowance());
     }
 
-    /** Who hears of valid frames from addresses that were not asked at that moment (late replies). */
+    /**
+     * Who hears of valid frames that answer no current request (late replies, from whichever address): bus
+     * exploration asks those addresses again, so a module slower than the scan timeout is not lost.
+     */
     public void onStrayFrame(Consumer<RtuFrame> listener) {
         master.onStrayFrame(listener);
     }

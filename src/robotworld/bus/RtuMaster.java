@@ -101,7 +101,10 @@ final class RtuMaster {
         return timing;
     }
 
-    /** Who hears about valid frames from addresses nobody asked at that moment. */
+    /**
+     * Who hears about valid frames that answer no current request: frames from addresses nobody asked at that
+     * moment, and late replies discarded as stale (each is proof that its address answers).
+     */
     void onStrayFrame(Consumer<RtuFrame> listener) {
         this.strayListener = listener == null ? frame -> { } : listener;
     }
@@ -169,7 +172,21 @@ final class RtuMaster {
      */
     synchronized void listenForStrays(Duration window, byte[] lastRequestPdu) {
         settlePending();
-        readReply(-1, lastRequestPdu, FrameLengths.responseTo(lastRequestPdu), System.nanoTime() + window.toNanos());
+        long deadline = System.nanoTime() + window.toNanos();
+        FrameLength length = FrameLengths.responseTo(lastRequestPdu);
+        // frame by frame, so the window can close early once no address owes a reply any more
+        while (anyReplyOwed() && readReply(-1, lastRequestPdu, length, deadline).kind() != Kind.TIMEOUT) {
+            // each valid frame went to the stray listener; corrupted ones were skipped up to the next silence
+        }
+    }
+
+    private boolean anyReplyOwed() {
+        for (int count : owed) {
+            if (count > 0) {
+                return true;
+            }
+        }
+        return false;
     }
 
     BusStatistics statistics() {
@@ -319,6 +336,8 @@ final class RtuMaster {
             if (reply.kind() != Kind.CORRUPT) { // a corrupted frame may be noise: the reply may still come
                 owed[address]--;
                 staleReplies.incrementAndGet();
+                // too late for its request, but proof that the address answers: exploration must hear of it
+                strayListener.accept(new RtuFrame(address, reply.pdu()));
                 LOG.debug("{} on {}: discarded a stale reply to an earlier {}: {}", describe.apply(address),
                         link.portName(), FunctionCodes.name(request[0]), RtuFrame.hex(reply.pdu(),
                                 reply.pdu().length));
@@ -328,13 +347,21 @@ final class RtuMaster {
         owedRequest[address] = null;
     }
 
-    /** Bytes waiting before a request belong to nobody's reply any more: report valid frames, drop the rest. */
+    /**
+     * Bytes waiting before a request belong to nobody's reply any more: report valid frames, drop the rest. A late
+     * reply may be arriving at this very moment, so reading goes on until the line falls silent: cutting the
+     * frame would lose it and turn its tail into a CRC error for the next request.
+     */
     private void drainStale() throws IOException {
+        if (link.available() <= 0) {
+            return;
+        }
         int have = 0;
-        while (link.available() > 0 && have < buffer.length) {
-            int n = link.read(buffer, have, buffer.length - have, Duration.ZERO);
+        long giveUp = System.nanoTime() + MAX_RESYNC_NANOS;
+        while (have < buffer.length && System.nanoTime() < giveUp) {
+            int n = link.read(buffer, have, buffer.length - have, millisAtLeastOne(interByteNanos));
             if (n <= 0) {
-                break;
+                break; // silence: the frame, if it is one, is complete
             }
             have += n;
         }

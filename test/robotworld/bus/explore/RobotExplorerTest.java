@@ -124,6 +124,11 @@ class RobotExplorerTest {
 
     @Test
     void aModuleSlowerThanTheScanTimeoutIsFoundThroughItsLateReply() throws Exception {
+        // a late-reply window far longer than the module's delay: a busy machine cannot make the reply miss it
+        RS485Bus patient = new RS485Bus(robot.serve("tcp://127.0.0.1:0"), SerialSettings.eightNoneOne(115_200),
+                BusTiming.defaults().withResponseTimeout(Duration.ofSeconds(3)));
+        bus.close();
+        bus = patient;
         assertTrue(bus.scanReplyTimeout().toMillis() < 40, "the slow module is slower than the scan timeout");
         ExplorationResult result = new RobotExplorer(bus, new ModuleCatalog(ProjectFiles.resolve("ModuleDescriptions")))
                 .addresses(10, 10).explore("Slow", new ExplorationListener() { });
