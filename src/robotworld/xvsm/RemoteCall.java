@@ -51,7 +51,9 @@ final class RemoteCall {
             giveUp(tuple);
             throw failure("the calling thread was interrupted", e);
         } catch (SpaceException e) {
-            giveUp(tuple);
+            // the space itself failed: asking it to withdraw the request now would spend a second network
+            // allowance past the call's bound; the sweeper withdraws it (or its late answer) when it can
+            abandon(tuple);
             throw failure("the space failed: " + e.getMessage(), e);
         }
         return decode(answer.get(0));
@@ -124,8 +126,13 @@ final class RemoteCall {
                 Thread.currentThread().interrupt();
             }
         }
-        module.runtime().abandonedCalls().add(module.containers, request.key(), tuple);
+        abandon(tuple);
         return false;
+    }
+
+    /** Leaves the request, or its late answer, to {@link AbandonedCalls}. */
+    private void abandon(Tuple tuple) {
+        module.runtime().abandonedCalls().add(module.containers, request.key(), tuple);
     }
 
     private String where() {

@@ -69,6 +69,9 @@ final class RequestServer {
             }
             thread = new Thread(this::run, "xvsm-serve " + name);
             thread.setDaemon(true);
+            // the loop catches every exception; an Error (out of memory, say) must still not pass unseen
+            thread.setUncaughtExceptionHandler((dead, error) -> LOG.error("{}: the serving thread died; the module is"
+                    + " no longer served", name, error));
             thread.start();
         }
     }
@@ -108,25 +111,34 @@ final class RequestServer {
         long pause = 0;
         List<CallTuple> taken = null; // requests taken together with the previous answers
         while (true) {
-            List<CallTuple> requests;
             try {
-                requests = taken != null ? taken : nextRequests();
+                List<CallTuple> requests = taken != null ? taken : nextRequests();
                 taken = null;
-                pause = 0;
+                if (pause > 0) {
+                    LOG.info("{}: serving again", name);
+                    pause = 0;
+                }
+                if (!requests.isEmpty()) {
+                    taken = answer(requests);
+                }
             } catch (Stop | SpaceClosedException end) {
                 return;
-            } catch (RuntimeException e) { // the space failed (or is unreachable): keep trying, more slowly
+            } catch (RuntimeException e) {
+                // the space failed or is unreachable, or anything else went wrong: this thread is the module's
+                // only server, so it never ends for that; it tries again, more slowly, and says so once
+                taken = null;
+                if (pause == 0) {
+                    LOG.warn("{}: cannot serve requests ({}); trying again with growing pauses up to {} ms", name,
+                            e.toString(), LONGEST_PAUSE_MILLIS);
+                } else {
+                    LOG.debug("{}: still cannot serve requests ({})", name, e.toString());
+                }
                 pause = pause == 0 ? FIRST_PAUSE_MILLIS : Math.min(LONGEST_PAUSE_MILLIS, pause * 2);
-                LOG.warn("{}: cannot take requests ({}); trying again in {} ms", name, e.toString(), pause);
                 try {
                     pause(pause);
                 } catch (Stop stop) {
                     return;
                 }
-                continue;
-            }
-            if (!requests.isEmpty()) {
-                taken = answer(requests);
             }
         }
     }

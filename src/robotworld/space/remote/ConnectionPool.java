@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedDeque;
+import java.util.concurrent.TimeUnit;
 
 /**
  * Keep-alive connections to one server: a call borrows one (or opens a new one), and gives it back after a
@@ -24,10 +25,17 @@ final class ConnectionPool {
         this.maxIdle = maxIdle;
     }
 
-    HttpConnection borrow() throws IOException {
+    /**
+     * An idle connection, or a new one.
+     *
+     * @param deadline {@link System#nanoTime()} by which a new connection must be made: a server that does not
+     *                 accept (host down, packets dropped, accept queue full) cannot hold the call past it
+     * @throws java.net.SocketTimeoutException when the connection could not be made in time
+     */
+    HttpConnection borrow(long deadline) throws IOException {
         HttpConnection connection = idle.pollFirst(); // most recently used first: least likely to be stale
         if (connection == null) {
-            connection = new HttpConnection(endpoint.host(), endpoint.port(), connectTimeoutMillis);
+            connection = new HttpConnection(endpoint.host(), endpoint.port(), connectTimeout(deadline));
         }
         inUse.add(connection);
         if (closed) {
@@ -47,8 +55,17 @@ final class ConnectionPool {
         idle.addFirst(connection);
     }
 
-    /** Closes a connection after a failed exchange. */
+    /** The connect timeout for a new connection: the configured one, cut to what is left before {@code deadline}. */
+    int connectTimeout(long deadline) {
+        long left = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
+        return (int) Math.max(1, Math.min(connectTimeoutMillis, left)); // 0 would mean "no timeout" to a socket
+    }
+
+    /** Closes a connection after a failed exchange; nothing to do for a connection that was never made. */
     void discard(HttpConnection connection) {
+        if (connection == null) {
+            return;
+        }
         inUse.remove(connection);
         connection.close();
     }

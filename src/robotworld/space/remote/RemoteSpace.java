@@ -421,7 +421,7 @@ public final class RemoteSpace implements Capi {
                 }
             }
             try {
-                connection = pool.borrow();
+                connection = pool.borrow(infinite ? readDeadline : Math.min(readDeadline, networkDeadline));
                 connection.send("POST", endpoint.path(operation), headers(ackHeader), request, request.length);
                 sent = true;
                 HttpConnection.Response response = connection.receive(readDeadline, waits ? RemoteSpace::checkInterrupt
@@ -454,7 +454,9 @@ public final class RemoteSpace implements Capi {
                     }
                     return answer;
                 }
-            } catch (InterruptedIOException interrupt) {
+            } catch (CallerInterrupted interrupt) {
+                // only the caller's interrupt: a socket timeout (an InterruptedIOException too) means an unreachable
+                // or silent server, and is handled below like any other broken exchange
                 pool.discard(connection);
                 acks.requeue(ackHeader);
                 return interrupted(operation, callId, retry);
@@ -573,7 +575,7 @@ public final class RemoteSpace implements Capi {
     private Answer postQuietly(String operation, byte[] request, String ackHeader, long deadline) {
         HttpConnection connection = null;
         try {
-            connection = new HttpConnection(endpoint.host(), endpoint.port(), options.connectTimeoutMillis());
+            connection = new HttpConnection(endpoint.host(), endpoint.port(), pool.connectTimeout(deadline));
             connection.send("POST", endpoint.path(operation), headers(ackHeader), request, request.length);
             HttpConnection.Response response = connection.receive(Math.max(deadline,
                     System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(100)), () -> { });
@@ -596,7 +598,7 @@ public final class RemoteSpace implements Capi {
         }
         HttpConnection connection = null;
         try {
-            connection = pool.borrow();
+            connection = pool.borrow(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
             byte[] body = {'{', '}'};
             connection.send("POST", endpoint.path("ack"), headers(header), body, body.length);
             HttpConnection.Response response = connection.receive(System.nanoTime()
@@ -618,7 +620,7 @@ public final class RemoteSpace implements Capi {
         while (true) {
             HttpConnection connection = null;
             try {
-                connection = pool.borrow();
+                connection = pool.borrow(deadline);
                 connection.send("GET", endpoint.basePath(), endpoint.authorization(), null, 0);
                 HttpConnection.Response response = connection.receive(deadline, () -> { });
                 pool.release(connection);
@@ -690,7 +692,16 @@ public final class RemoteSpace implements Capi {
 
     private static void checkInterrupt() throws InterruptedIOException {
         if (Thread.currentThread().isInterrupted()) {
-            throw new InterruptedIOException("interrupted");
+            throw new CallerInterrupted();
+        }
+    }
+
+    /** The calling thread was interrupted while its call waited: told apart from socket timeouts on purpose. */
+    private static final class CallerInterrupted extends InterruptedIOException {
+        private static final long serialVersionUID = 1L;
+
+        CallerInterrupted() {
+            super("interrupted");
         }
     }
 
