@@ -99,7 +99,7 @@ final class SpaceOperations {
             throw new ErrorAnswer(WireError.CANCELLED, "call " + in.call + " was cancelled");
         }
         if (blocks && !state.waitingPermits.tryAcquire()) {
-            throw new ErrorAnswer(WireError.BUSY, "too many operations are waiting on this server; try again");
+            return tryOnceOrBusy(operation, in, out);
         }
         try {
             CallRegistry.InFlight call = null;
@@ -156,6 +156,20 @@ final class SpaceOperations {
             if (blocks) {
                 state.waitingPermits.release();
             }
+        }
+    }
+
+    /**
+     * Every place for a waiting operation is taken. An operation that can complete at once still does: the places
+     * are usually held by calls waiting for answers, and the operations that produce those answers (a provider
+     * taking the next request) must never be refused for that. Only an operation that would have to wait is told
+     * to come back ({@code busy}).
+     */
+    private boolean tryOnceOrBusy(Operation operation, RequestFields in, WireWriter out) {
+        try {
+            return waiting(operation, in, Timeout.TRY_ONCE, 0, out);
+        } catch (SpaceTimeoutException mustWait) {
+            throw new ErrorAnswer(WireError.BUSY, "too many operations are waiting on this server; try again");
         }
     }
 

@@ -12,8 +12,10 @@ import org.eclipse.jetty.ee10.servlet.ServletContextHandler;
 import org.eclipse.jetty.ee10.servlet.ServletHolder;
 import org.eclipse.jetty.server.HttpConfiguration;
 import org.eclipse.jetty.server.HttpConnectionFactory;
+import org.eclipse.jetty.server.NetworkConnectionLimit;
 import org.eclipse.jetty.server.Server;
 import org.eclipse.jetty.server.ServerConnector;
+import org.eclipse.jetty.server.handler.EagerContentHandler;
 import org.eclipse.jetty.util.thread.QueuedThreadPool;
 import robotworld.core.HostNames;
 import robotworld.space.EmbeddedSpace;
@@ -103,7 +105,13 @@ public final class SpaceServer implements AutoCloseable {
         ServletContextHandler context = new ServletContextHandler();
         context.setContextPath("/");
         context.addServlet(new ServletHolder("space", new SpaceServlet(state)), options.path() + "/*");
-        jetty.setHandler(context);
+        context.setErrorHandler(new JsonErrorHandler(wire));
+        // a request's body is read without holding a thread, and the servlet runs once it is all there: clients
+        // that send slowly (a bad link, or on purpose) cannot take the threads that others' calls need
+        jetty.setHandler(new EagerContentHandler(context, new EagerContentHandler.RetainedContentLoaderFactory(
+                options.limits().maxBodyBytes() + 1L, -1, false)));
+        jetty.setErrorHandler(new JsonErrorHandler(wire));
+        jetty.addBean(new NetworkConnectionLimit(options.maxConnections(), connector));
         jetty.setStopTimeout(options.stopGraceMillis());
         ScheduledExecutorService sessionTimer = Executors.newSingleThreadScheduledExecutor(task -> {
             Thread thread = new Thread(task, "space-server-sessions");
@@ -270,11 +278,13 @@ public final class SpaceServer implements AutoCloseable {
      * @param notificationQueue          per-subscription queue of a space the server creates itself
      * @param sessionGraceMillis         how long a notification session waits for its client to reconnect (also
      *                                   across a graceful restart) before its subscriptions are cancelled
+     * @param maxConnections             most open connections at once; at the limit the server stops accepting
+     *                                   and closes idle connections sooner
      */
     public record Options(String bindAddress, int port, String path, String token, URI publicUri, WireLimits limits,
                           long maxWaitMillis, long leaseMillis, long heartbeatMillis, long stopGraceMillis,
                           int maxWaitingCalls, int maxSessions, int sessionQueue, int maxSubscriptionsPerSession,
-                          int notificationQueue, long sessionGraceMillis) {
+                          int notificationQueue, long sessionGraceMillis, int maxConnections) {
 
         /** The port used when none is given. */
         public static final int DEFAULT_PORT = 9876;
@@ -289,7 +299,7 @@ public final class SpaceServer implements AutoCloseable {
             }
             if (maxWaitMillis < 10 || leaseMillis < 10 || heartbeatMillis < 10 || stopGraceMillis < 0
                     || maxWaitingCalls < 1 || maxSessions < 1 || sessionQueue < 1 || maxSubscriptionsPerSession < 1
-                    || notificationQueue < 1 || sessionGraceMillis < 10) {
+                    || notificationQueue < 1 || sessionGraceMillis < 10 || maxConnections < 1) {
                 throw new IllegalArgumentException("server times and limits must be positive");
             }
         }
@@ -297,91 +307,98 @@ public final class SpaceServer implements AutoCloseable {
         /** Loopback, port 9876, path {@code /space}, no token, default limits, 20 s waits, 10 s leases. */
         public static Options defaults() {
             return new Options("127.0.0.1", DEFAULT_PORT, "/space", null, null, WireLimits.DEFAULTS, 20_000, 10_000,
-                    2_000, 1_000, 512, 128, 10_000, 1_000, EmbeddedSpace.DEFAULT_NOTIFICATION_QUEUE, 10_000);
+                    2_000, 1_000, 4_096, 128, 10_000, 1_000, EmbeddedSpace.DEFAULT_NOTIFICATION_QUEUE, 10_000, 4_096);
         }
 
         /** With another address to listen on. */
         public Options bindAddress(String address) {
             return new Options(address, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With another port (0: any free one). */
         public Options port(int newPort) {
             return new Options(bindAddress, newPort, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With a bearer token every request must carry. */
         public Options token(String newToken) {
             return new Options(bindAddress, port, path, newToken, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With the URI clients use and crefs carry. */
         public Options publicUri(URI uri) {
             return new Options(bindAddress, port, path, token, uri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With other message limits. */
         public Options limits(WireLimits newLimits) {
             return new Options(bindAddress, port, path, token, publicUri, newLimits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With another longest wait per request. */
         public Options maxWaitMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, millis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With another lease for unconfirmed takes. */
         public Options leaseMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, millis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With another heartbeat period. */
         public Options heartbeatMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     millis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With another grace period for a graceful stop. */
         public Options stopGraceMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, millis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With another bound on waiting requests. */
         public Options maxWaitingCalls(int calls) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, calls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
         }
 
         /** With another grace period for reconnecting notification sessions. */
         public Options sessionGraceMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, millis);
+                    maxSubscriptionsPerSession, notificationQueue, millis, maxConnections);
+        }
+
+        /** With another bound on open connections (then new ones wait in the listen queue). */
+        public Options maxConnections(int connections) {
+            return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
+                    heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, connections);
         }
 
         /** With another per-subscription queue for a space the server creates. */
         public Options notificationQueue(int capacity) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, capacity, sessionGraceMillis);
+                    maxSubscriptionsPerSession, capacity, sessionGraceMillis, maxConnections);
         }
     }
 }

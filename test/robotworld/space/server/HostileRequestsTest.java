@@ -94,6 +94,44 @@ class HostileRequestsTest {
         }
     }
 
+    /**
+     * Requests Jetty refuses before the space sees them (it cannot parse them, or they exceed its limits) get the
+     * same JSON error answer as every other failure, never an HTML page, and the server keeps serving.
+     */
+    @Test
+    void requestsRefusedBeforeTheSpaceGetJsonErrorsToo() throws IOException {
+        try (SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(100));
+             RemoteSpace client = RemoteSpace.open(server.uri())) {
+            String path = server.uri().getPath();
+            List<String> failures = new ArrayList<>();
+            record Refused(String name, int status, String head) {
+            }
+            List<Refused> cases = List.of(
+                    new Refused("garbled request line", 400, "GET\u0001/ HTTP/1.1\r\n"),
+                    new Refused("URI too long", 414, "GET " + path + "/" + "u".repeat(70_000) + " HTTP/1.1\r\n"),
+                    new Refused("headers too large", 431, "GET " + path + " HTTP/1.1\r\nX-Filler: "
+                            + "h".repeat(40_000) + "\r\n"),
+                    new Refused("unsupported HTTP version", 505, "GET " + path + " HTTP/3.0\r\n"),
+                    new Refused("body ends before its length", 400, "POST " + path + "/lookup HTTP/1.1\r\n"
+                            + "Content-Type: application/json\r\nContent-Length: 400\r\n"));
+            for (Refused refused : cases) {
+                RawHttp.Answer answer = RawHttp.send(server.uri(), refused.head(), "{\"name\":".getBytes());
+                String type = answer.head().toLowerCase(java.util.Locale.ROOT);
+                if (answer.status() != refused.status() || !type.contains("content-type: application/json")
+                        || !answer.body().startsWith("{\"error\":\"") || !answer.body().contains("\"message\":")) {
+                    failures.add(refused.name() + " -> " + answer.status() + " " + answer.head().lines().filter(
+                            l -> l.toLowerCase(java.util.Locale.ROOT).startsWith("content-type")).findFirst()
+                            .orElse("(no type)") + " " + answer.body().substring(0, Math.min(120,
+                            answer.body().length())));
+                }
+            }
+            assertTrue(failures.isEmpty(), String.join("\n", failures));
+            ContainerRef still = client.createContainer(ContainerSpec.of(Order.FIFO));
+            client.write(still, Timeout.TRY_ONCE, Entry.of("serving"));
+            assertEquals(List.of(Entry.of("serving")), client.take(still, Timeout.TRY_ONCE));
+        }
+    }
+
     @Test
     void anOversizedBodyIsRefusedBeforeItIsRead() throws IOException {
         try (SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(100))) {
