@@ -1,5 +1,6 @@
 package robotworld.core;
 
+import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
@@ -15,6 +16,8 @@ import java.util.Properties;
  *   <tr><th>value</th><th>system property</th><th>environment variable</th></tr>
  *   <tr><td>space URL</td><td>{@code rwe.space.url}</td><td>{@code RWE_SPACE_URL}</td></tr>
  *   <tr><td>access token</td><td>{@code rwe.space.token}</td><td>{@code RWE_SPACE_TOKEN}</td></tr>
+ *   <tr><td>a file holding the access token</td><td>{@code rwe.space.tokenFile}</td>
+ *       <td>{@code RWE_SPACE_TOKEN_FILE}</td></tr>
  *   <tr><td>host name</td><td>{@code rwe.host}</td><td>{@code RWE_HOST}</td></tr>
  *   <tr><td>a participant's port</td><td>{@code rwe.port.<Participant>.<kind>}</td>
  *       <td>{@code RWE_PORT_<PARTICIPANT>_<KIND>}</td></tr>
@@ -48,9 +51,21 @@ public final class RuntimeSettings {
                 "no space URL: set <SpaceURL> in the world, -Drwe.space.url=... or RWE_SPACE_URL");
     }
 
-    /** The access token for the space, or null when none is configured. */
+    /**
+     * The access token for the space, or null when none is configured: the token itself, else the contents of
+     * the token file. A token on the command line ({@code -Drwe.space.token=...}) is visible to every user of the
+     * computer in the process list, so it is warned about once; the environment variable and the file are not.
+     *
+     * @throws IllegalStateException when a token file is named but cannot be read or is empty
+     */
     public String spaceToken() {
-        return lookup("rwe.space.token", "RWE_SPACE_TOKEN", null);
+        String token = lookup("rwe.space.token", "RWE_SPACE_TOKEN", null);
+        if (token != null) {
+            TokenOnCommandLine.warnIfSo();
+            return token;
+        }
+        String file = lookup("rwe.space.tokenFile", "RWE_SPACE_TOKEN_FILE", null);
+        return file == null ? null : TokenFile.read(Path.of(file));
     }
 
     /** This program's host name: the override, or {@code fromDescription}. */

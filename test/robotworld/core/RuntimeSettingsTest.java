@@ -5,9 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Map;
 import java.util.Properties;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 class RuntimeSettingsTest {
 
@@ -41,6 +44,26 @@ class RuntimeSettingsTest {
                 "rwe.port.CaterpillarRobot.bus", "tcp://127.0.0.1:6000"), env);
         assertEquals("http://prop:2/space", both.spaceUrl("http://description/space"));
         assertEquals("tcp://127.0.0.1:6000", both.port("CaterpillarRobot", "bus", null));
+    }
+
+    @Test
+    void theTokenCanComeFromAFileSoThatItIsNotOnTheCommandLine(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("token");
+        Files.writeString(file, "  from-a-file \n");
+        assertEquals("from-a-file", RuntimeSettings.of(props("rwe.space.tokenFile", file.toString()), Map.of())
+                .spaceToken());
+        assertEquals("from-a-file", RuntimeSettings.of(props(), Map.of("RWE_SPACE_TOKEN_FILE", file.toString()))
+                .spaceToken());
+        assertEquals("given", RuntimeSettings.of(props("rwe.space.tokenFile", file.toString()),
+                Map.of("RWE_SPACE_TOKEN", "given")).spaceToken(), "the token itself comes first");
+
+        IllegalStateException missing = assertThrows(IllegalStateException.class, () -> RuntimeSettings.of(
+                props("rwe.space.tokenFile", dir.resolve("nope").toString()), Map.of()).spaceToken());
+        assertTrue(missing.getMessage().contains("does not exist"), missing.getMessage());
+        Files.writeString(file, "\n");
+        IllegalStateException empty = assertThrows(IllegalStateException.class, () -> RuntimeSettings.of(
+                props("rwe.space.tokenFile", file.toString()), Map.of()).spaceToken());
+        assertTrue(empty.getMessage().contains("is empty"), empty.getMessage());
     }
 
     @Test

@@ -2,8 +2,6 @@ package robotworld.explorer.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -12,6 +10,8 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
+import robotworld.core.RuntimeSettings;
+import robotworld.core.TokenFile;
 import robotworld.space.server.SpaceServer;
 
 /**
@@ -32,7 +32,8 @@ final class SpaceCommand implements Callable<Integer> {
     private String bind;
 
     @Option(names = "--token-file", paramLabel = "F",
-            description = "file holding a secret token; clients must then send it as a bearer token")
+            description = "file holding a secret token; clients must then send it as a bearer token"
+                    + " (default: the token of RWE_SPACE_TOKEN or RWE_SPACE_TOKEN_FILE, if set)")
     private Path tokenFile;
 
     @Spec
@@ -42,8 +43,9 @@ final class SpaceCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         PrintWriter out = spec.commandLine().getOut();
         SpaceServer.Options options = SpaceServer.Options.defaults().port(port).bindAddress(bind);
-        if (tokenFile != null) {
-            options = options.token(readToken(tokenFile));
+        String token = tokenFile != null ? TokenFile.read(tokenFile) : RuntimeSettings.fromSystem().spaceToken();
+        if (token != null) {
+            options = options.token(token);
         }
         SpaceServer server = SpaceServer.start(options);
         CountDownLatch stopped = new CountDownLatch(1);
@@ -52,9 +54,9 @@ final class SpaceCommand implements Callable<Integer> {
             stopped.countDown();
         }, "rwe-space-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
-        out.println("space server listening on " + server.uri() + (tokenFile != null ? " (token required)" : ""));
+        out.println("space server listening on " + server.uri() + (token != null ? " (token required)" : ""));
         if (!"127.0.0.1".equals(bind) && !"localhost".equals(bind) && !"::1".equals(bind)) {
-            out.println("warning: reachable from other hosts" + (tokenFile == null ? " without a token" : ""));
+            out.println("warning: reachable from other hosts" + (token == null ? " without a token" : ""));
         }
         out.println("press Ctrl-C to stop");
         out.flush();
@@ -72,13 +74,5 @@ final class SpaceCommand implements Callable<Integer> {
         server.stop();
         out.println("space server stopped");
         out.flush();
-    }
-
-    private static String readToken(Path file) throws IOException {
-        String token = Files.readString(file, StandardCharsets.UTF_8).strip();
-        if (token.isEmpty()) {
-            throw new IOException("the token file " + file + " is empty");
-        }
-        return token;
     }
 }
