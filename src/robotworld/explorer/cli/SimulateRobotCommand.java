@@ -11,6 +11,10 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import robotworld.bus.InvalidPortNameException;
+import robotworld.core.RuntimeSettings;
+import robotworld.explorer.monitor.MonitorSpace;
+import robotworld.sim.robot.GroundTruthFeed;
+import robotworld.space.Capi;
 import robotworld.sim.robot.LineTiming;
 import robotworld.sim.robot.SimRobotConfig;
 import robotworld.sim.robot.SimRobotConfigException;
@@ -23,6 +27,8 @@ import robotworld.sim.robot.SimulatedRobot;
                 "Motor speeds drive the robot, bumpers close on contact, IR sensors measure distances.",
                 "The configuration format is described in docs/bus.md; see docs/examples/simulated-robot.sim."})
 final class SimulateRobotCommand implements Callable<Integer> {
+
+    private static final long STATUS_NANOS = 1_000_000_000L;
 
     @Option(names = "--config", required = true, paramLabel = "FILE", description = "the robot's configuration (XML)")
     private Path config;
@@ -45,6 +51,19 @@ final class SimulateRobotCommand implements Callable<Integer> {
     @Option(names = "--for", paramLabel = "SECONDS", description = "stop after this long (default: run until Ctrl-C)")
     private Double seconds;
 
+    @Option(names = "--space", paramLabel = "URL",
+            description = "publish the robot's ground truth (pose, rays, contacts, speeds) to this space server for "
+                    + "the monitor's world view (default: rwe.space.url or RWE_SPACE_URL if set, else none)")
+    private String spaceUrl;
+
+    @Option(names = "--participant", paramLabel = "NAME",
+            description = "the robot's name in the world, naming the container <NAME>GROUNDTRUTH (default: the "
+                    + "configuration's name)")
+    private String participant;
+
+    @Option(names = {"-q", "--quiet"}, description = "no status line every second")
+    private boolean quiet;
+
     @Spec
     private CommandSpec spec;
 
@@ -60,7 +79,9 @@ final class SimulateRobotCommand implements Callable<Integer> {
             }
             return 1;
         }
-        try (SimulatedRobot robot = SimulatedRobot.create(chosen)) {
+        String url = spaceUrl != null ? spaceUrl : spaceOverride();
+        try (SimulatedRobot robot = SimulatedRobot.create(chosen);
+             Capi space = url == null ? null : openSpace(url)) {
             String served;
             try {
                 served = robot.serve(port);
@@ -69,26 +90,65 @@ final class SimulateRobotCommand implements Callable<Integer> {
             }
             out.println(robot.describe());
             out.println("serving the bus on " + served);
-            out.println(seconds == null ? "press Ctrl-C to stop" : "stopping after " + seconds + " s");
-            out.flush();
-            CountDownLatch stopped = new CountDownLatch(1);
-            Thread hook = new Thread(stopped::countDown);
-            Runtime.getRuntime().addShutdownHook(hook);
-            try {
-                if (seconds == null) {
-                    stopped.await();
-                } else {
-                    stopped.await(Math.round(seconds * 1000), TimeUnit.MILLISECONDS);
+            String name = participant != null ? participant : chosen.name();
+            try (GroundTruthFeed feed = GroundTruthFeed.start(robot, name, space, GroundTruthFeed.DEFAULT_PERIOD)) {
+                if (space != null) {
+                    out.println("publishing its ground truth to " + url + " as " + feed.containerName()
+                            + " (20 frames/s)");
                 }
-            } finally {
-                try {
-                    Runtime.getRuntime().removeShutdownHook(hook);
-                } catch (IllegalStateException e) {
-                    // shutting down already
-                }
+                out.println(seconds == null ? "press Ctrl-C to stop" : "stopping after " + seconds + " s");
+                out.flush();
+                runUntilStopped(feed, out);
             }
             out.println("robot at " + robot.pose());
             return 0;
+        }
+    }
+
+    /** Until Ctrl-C or --for, with a status line every second unless --quiet. */
+    private void runUntilStopped(GroundTruthFeed feed, PrintWriter out) throws InterruptedException {
+        CountDownLatch stopped = new CountDownLatch(1);
+        Thread hook = new Thread(stopped::countDown);
+        Runtime.getRuntime().addShutdownHook(hook);
+        long started = System.nanoTime();
+        long end = seconds == null ? Long.MAX_VALUE : started + Math.round(seconds * 1e9);
+        try {
+            while (true) {
+                long now = System.nanoTime();
+                long wait = Math.min(STATUS_NANOS - (now - started) % STATUS_NANOS, end - now);
+                if (wait <= 0 || stopped.await(wait, TimeUnit.NANOSECONDS)) {
+                    return;
+                }
+                if (!quiet && System.nanoTime() < end) {
+                    out.println(SimulationStatus.line(System.nanoTime() - started, feed));
+                    out.flush();
+                }
+            }
+        } catch (InterruptedException e) {
+            // stopped from inside the JVM (tests, embedding): end as --for would
+        } finally {
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException e) {
+                // shutting down already
+            }
+        }
+    }
+
+    /** {@code rwe.space.url} / {@code RWE_SPACE_URL}, or null: a simulator publishes only when told where. */
+    private static String spaceOverride() {
+        try {
+            return RuntimeSettings.fromSystem().spaceUrl(null);
+        } catch (IllegalStateException none) {
+            return null;
+        }
+    }
+
+    private Capi openSpace(String url) {
+        try {
+            return MonitorSpace.open(url);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), "--space: " + e.getMessage());
         }
     }
 

@@ -41,6 +41,11 @@ public final class SimBumperModule extends SimModule {
         return "BumperModule";
     }
 
+    /** Bumper number to its mount, for the ground truth. */
+    Map<Integer, Mount> mounts() {
+        return mounts;
+    }
+
     @Override
     int discreteInputCount() {
         return BUMPERS;

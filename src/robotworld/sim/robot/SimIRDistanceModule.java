@@ -51,6 +51,16 @@ public final class SimIRDistanceModule extends SimModule {
         return (int) Math.round(Math.min(range, world.rangeAt(angle)));
     }
 
+    /** Sensor number to mounting angle, for the ground truth. */
+    Map<Integer, Double> angles() {
+        return angles;
+    }
+
+    /** The largest distance the sensors report, in mm. */
+    int range() {
+        return range;
+    }
+
     @Override
     int inputRegisterCount() {
         return 2 * SENSORS;

@@ -55,6 +55,16 @@ public final class SimMotorModule extends SimModule {
         return rightChannel == 0 ? 0 : actual[rightChannel - 1] / 1000;
     }
 
+    /** The actual speed of motor {@code motor} (1..8), -1..1. */
+    double actualSpeed(int motor) {
+        return actual[motor - 1] / 1000;
+    }
+
+    /** Which wheel motor {@code motor} (1..8) drives: {@code left}, {@code right} or empty. */
+    String wheelOf(int motor) {
+        return motor == leftChannel ? "left" : motor == rightChannel ? "right" : "";
+    }
+
     /** The set speed of motor {@code motor} (1..8) in per-mille. */
     public int setSpeed(int motor) {
         return set[motor - 1];

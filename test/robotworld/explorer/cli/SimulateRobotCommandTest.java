@@ -49,6 +49,24 @@ class SimulateRobotCommandTest {
         assertTrue(out.toString().contains("simulated robot 'CaterpillarRobot': MotorModule at 1, BumperModule at 2, "
                 + "ServoModule at 3, IRDistanceModule at 4; 115200 baud, fast timing"), out.toString());
         assertTrue(out.toString().contains("robot at (600.0, 1000.0) heading 0.0"), out.toString());
+        assertTrue(out.toString().contains("[   1 s] at (600, 1000) heading 0°, tracks L +0.00 R +0.00, free, 0 bumps"),
+                "a status line every second: " + out);
+    }
+
+    @Test
+    void publishesTheGroundTruthToASpaceAndKeepsQuietWhenAsked() throws Exception {
+        try (robotworld.space.EmbeddedSpace data = robotworld.space.EmbeddedSpace.open();
+             robotworld.space.server.SpaceServer server = robotworld.space.server.SpaceServer.start(data,
+                     robotworld.space.server.SpaceServer.Options.defaults().port(0).stopGraceMillis(200))) {
+            String config = ProjectFiles.resolve("docs/examples/simulated-robot.sim").toString();
+            assertEquals(0, rwe("simulate", "robot", "--config", config, "--port", "tcp://127.0.0.1:0", "--for", "1.3",
+                    "--quiet", "--space", server.uri().toString(), "--participant", "Robbie"), err.toString());
+            assertTrue(out.toString().contains("publishing its ground truth to " + server.uri()
+                    + " as RobbieGROUNDTRUTH"), out.toString());
+            assertTrue(!out.toString().contains("[   1 s]"), "--quiet: no status line\n" + out);
+            var frames = data.read(data.lookupContainer("RobbieGROUNDTRUTH"), robotworld.space.Timeout.TRY_ONCE);
+            assertEquals("Robbie", robotworld.observe.GroundTruthTuples.decode(frames.get(0)).robot());
+        }
     }
 
     @Test

@@ -1,0 +1,37 @@
+/**
+ * Watching a running world's traffic without taking part in it: one small observer interface for everything that
+ * shows, records or forwards what happens in a RobotWorld (the monitor window, the console monitor, a recorder, a
+ * bridge to other tools), and the one tap that reads a world's containers in a space and hands the events to the
+ * observers.
+ *
+ * <h2>The contract</h2>
+ * <ul>
+ *   <li>A {@link robotworld.observe.WorldTap} subscribes to the containers of the modules of one world
+ *       ({@code <Participant><Module>REQUEST} and {@code ...ANSWER}, see the runtime's documentation) and to each
+ *       robot's ground-truth container ({@code <Participant>GROUNDTRUTH}, written by a simulator). It only reads:
+ *       it never slows down or changes a control program.</li>
+ *   <li>Every {@link robotworld.observe.WorldObserver} method is called on the tap's <em>one</em> dispatch thread,
+ *       one call at a time, in the order the tap received the events. An observer therefore needs no locking for
+ *       its own state, but must return quickly and must not block (hand slow work to a thread of its own, or to
+ *       the Swing event thread). An exception thrown by an observer is logged and does not stop the tap or the
+ *       other observers.</li>
+ *   <li>Events may be missing, and the tap says so: when the space dropped notifications (a subscription
+ *       overflowed or its container was destroyed and watching resumed), when observers fell so far behind that
+ *       the tap's bounded queue was full, and when watching ended (the space connection closed),
+ *       {@link robotworld.observe.WorldObserver#gap} is called. Without a gap signal, every request and answer
+ *       the space reported has been delivered. An answer that arrives between the tap's first read of a container
+ *       and its subscription can be missed without a gap; the next one brings observers up to date.</li>
+ *   <li>Events carry the time the tap received them. A call's latency is the time between the tap seeing its
+ *       request written and its answer arriving, so it is known only for remote calls (a local call on the
+ *       module's own computer is published after it happened, without its duration).</li>
+ *   <li>Liveness: a participant is {@link robotworld.observe.Liveness.State#ALIVE} while any of its Local sides
+ *       takes requests or publishes answers, {@link robotworld.observe.Liveness.State#NOT_ANSWERING} while a
+ *       request to it has waited longer than the liveness window, and
+ *       {@link robotworld.observe.Liveness.State#UNKNOWN} while it is quiet (nothing says whether it runs). The
+ *       tap reports each change.</li>
+ * </ul>
+ *
+ * <p>This package does not depend on Swing or on description files: a world is given as a
+ * {@link robotworld.observe.WorldLayout}.
+ */
+package robotworld.observe;
