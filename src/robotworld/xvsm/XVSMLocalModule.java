@@ -6,6 +6,9 @@ import java.util.Objects;
 import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robotworld.safety.Actuator;
+import robotworld.safety.ActuatorGuard;
+import robotworld.safety.StopCause;
 import robotworld.space.Entry;
 
 /**
@@ -17,6 +20,12 @@ import robotworld.space.Entry;
  *
  * <p>A failed hardware call is answered with an error answer, and the thread goes on serving. Sensor modules may
  * batch: take every waiting request, read the hardware once, answer all ({@link #batchPerformer()}).
+ *
+ * <p><b>Actuators</b> (subclasses that implement {@link Actuator}) are guarded by the program's safety layer
+ * ({@code robotworld.safety}): every command, local or remote, is first admitted by the actuator's
+ * {@link ActuatorGuard}, which refuses it (without carrying it out) when the actuator was stopped since its
+ * commander last commanded it; the caller gets an {@link ActuatorStoppedException}. Closing the proxy, or the
+ * runtime, puts the actuator into its safe state.
  *
  * <p>Subclasses map their interface onto tuples: each interface method calls {@link #callLocally}, and
  * {@link #perform} carries out a request, for local and remote callers alike. A subclass constructor ends with
@@ -39,6 +48,7 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
     }
 
     private final H hardware;
+    private final ActuatorGuard guard;
     private final RequestServer server;
     private volatile boolean publishLocalCalls;
     private volatile boolean adaptiveBatching;
@@ -53,6 +63,12 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         super(runtime, participant, moduleName);
         this.hardware = Objects.requireNonNull(hardware, "hardware");
         this.publishLocalCalls = runtime.publishLocalCallsByDefault();
+        if (this instanceof Actuator actuator) {
+            this.guard = runtime.safety().guard(participant, moduleName, actuator);
+        } else {
+            this.guard = null;
+            runtime.safety().serves(participant, moduleName);
+        }
         this.server = new RequestServer(containers, participant + "/" + moduleName, this::answerAll,
                 () -> adaptiveBatching);
     }
@@ -93,15 +109,32 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
      */
     protected final CallTuple callLocally(Object function, Object... args) {
         CallTuple request = CallTuple.of(hostName(), function, args);
+        String commander = runtime().programId();
+        ActuatorGuard.Admission admission = guard == null ? null : guard.admit(commander, true);
+        if (admission != null && !admission.admitted()) {
+            ActuatorStoppedException refused = new ActuatorStoppedException(participant(), moduleName(),
+                    request.functionText(), hostName(), admission.refusal().summary());
+            publish(ErrorAnswer.of(request, refused, hostName()).toAnswer(hostName()));
+            throw refused;
+        }
         CallTuple answer;
         try {
             answer = request.withFields(perform(request));
         } catch (RuntimeException e) {
             publish(ErrorAnswer.of(request, e, hostName()).toAnswer(hostName()));
             throw e;
+        } finally {
+            if (admission != null) {
+                guard.performed(commander, admission);
+            }
         }
         publish(answer);
         return answer;
+    }
+
+    /** The actuator's guard, or null for a sensor. */
+    protected final ActuatorGuard guard() {
+        return guard;
     }
 
     /** Whether local calls are published into the ANSWER container. */
@@ -129,7 +162,10 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         return server.isRunning();
     }
 
-    /** Stops the serving thread after it has answered what it has taken; idempotent. The hardware stays open. */
+    /**
+     * Stops the serving thread after it has answered what it has taken, and puts an actuator into its safe state
+     * (unless the runtime's close already did); idempotent. The hardware stays open.
+     */
     @Override
     public void close() {
         if (closed) {
@@ -138,6 +174,12 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         closed = true;
         if (server != null) { // null when the constructor failed after registering with the runtime
             server.stop();
+        }
+        if (guard != null) {
+            if (!guard.hasEnded()) {
+                guard.stop(StopCause.PROGRAM_ENDED, "its proxy was closed", null, null);
+            }
+            runtime().safety().release(guard);
         }
     }
 
@@ -186,6 +228,11 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
     }
 
     private CallTuple answer(Performer performer, CallTuple request) {
+        String commander = commanderOf(request.key());
+        ActuatorGuard.Admission admission = guard == null ? null : guard.admit(commander, isWaitingCall(request.key()));
+        if (admission != null && !admission.admitted()) {
+            return ErrorAnswer.stopped(request, admission.refusal().summary(), hostName()).toAnswer(request.key());
+        }
         try {
             return request.withFields(performer.perform(request));
         } catch (VirtualMachineError fatal) {
@@ -193,6 +240,29 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         } catch (Throwable failure) { // the thread must survive any failure of the hardware or its proxy
             LOG.debug("{}/{} {} failed: {}", participant(), moduleName(), request.functionText(), failure.toString());
             return ErrorAnswer.of(request, failure, hostName()).toAnswer(request.key());
+        } finally {
+            if (admission != null) {
+                guard.performed(commander, admission);
+            }
         }
+    }
+
+    /**
+     * The program that sent a request: {@code host#run} of the key {@code host#run.n} (a call that waits for its
+     * answer) or {@code host#run} (a quiet call); a key without {@code #} is taken as it is.
+     */
+    static String commanderOf(String key) {
+        int hash = key.indexOf('#');
+        if (hash < 0) {
+            return key;
+        }
+        int dot = key.indexOf('.', hash);
+        return dot < 0 ? key : key.substring(0, dot);
+    }
+
+    /** Whether the caller of a request waits for its answer (its key has a call number, {@code host#run.n}). */
+    static boolean isWaitingCall(String key) {
+        int hash = key.indexOf('#');
+        return hash >= 0 && key.indexOf('.', hash) >= 0;
     }
 }

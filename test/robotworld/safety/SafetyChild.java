@@ -1,0 +1,73 @@
+package robotworld.safety;
+
+import robotworld.bus.BusTiming;
+import robotworld.bus.MotorModuleProxy;
+import robotworld.bus.RS485Bus;
+import robotworld.bus.SerialSettings;
+import robotworld.xvsm.XVSMMotorModuleLocal;
+import robotworld.xvsm.XVSMMotorModuleRemote;
+import robotworld.xvsm.XVSMRuntime;
+
+/**
+ * The programs whose ends the safety tests cause, run in JVMs of their own ({@link ChildProgram}). The main
+ * method has the shape of a generated one: a runtime in try-with-resources, {@code runtime.failed(...)} for an
+ * uncaught exception.
+ *
+ * <pre>
+ * serve  return|throw|exit|wait  SPACE_URL BUS_PORT   the robot's program: serves SafetyBot/Motor, sets motors 1
+ *                                                     and 2 to 0.45, prints READY, then returns, throws, calls
+ *                                                     System.exit(3) or waits to be killed
+ * command SPACE_URL SPEED                             a remote commander: sets motors 1 and 2 of SafetyBot/Motor
+ *                                                     through the space, prints READY, waits to be killed
+ * </pre>
+ */
+public final class SafetyChild {
+
+    private SafetyChild() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (args[0].equals("command")) {
+            command(args[1], Double.parseDouble(args[2]));
+            return;
+        }
+        String mode = args[1];
+        try (XVSMRuntime runtime = XVSMRuntime.connect(args[2], "robot-pc")) {
+            try {
+                RS485Bus bus = runtime.own(new RS485Bus(args[3], SerialSettings.eightNoneOne(115_200),
+                        BusTiming.defaults().withFrameGap(java.time.Duration.ZERO)));
+                XVSMMotorModuleLocal motor = runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT,
+                        SafetyRig.MOTOR, new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
+                motor.setMotor(1, 0.45);
+                motor.setMotor(2, 0.45);
+                System.out.println("READY " + runtime.programId());
+                System.out.flush();
+                switch (mode) {
+                    case "return" -> {
+                        // the program ends normally: the runtime's close stops the motors
+                    }
+                    case "throw" -> throw new IllegalStateException("the control program failed on purpose");
+                    case "exit" -> System.exit(3);
+                    case "wait" -> runtime.serveUntilStopped();
+                    default -> throw new IllegalArgumentException("unknown mode " + mode);
+                }
+            } catch (Throwable failure) {
+                runtime.failed(failure);
+                throw failure;
+            }
+        }
+    }
+
+    private static void command(String spaceUrl, double speed) throws Exception {
+        try (XVSMRuntime runtime = XVSMRuntime.connect(spaceUrl, "laptop")) {
+            XVSMMotorModuleRemote motor = runtime.own(new XVSMMotorModuleRemote(runtime, SafetyRig.ROBOT,
+                    SafetyRig.MOTOR));
+            motor.setCallTimeout(java.time.Duration.ofSeconds(30));
+            motor.setMotor(1, speed);
+            motor.setMotor(2, speed);
+            System.out.println("READY " + runtime.programId());
+            System.out.flush();
+            Thread.sleep(Long.MAX_VALUE);
+        }
+    }
+}
