@@ -1,5 +1,8 @@
 package robotworld.safety;
 
+import java.time.Duration;
+import java.util.function.Consumer;
+import robotworld.bus.ModuleProxy;
 import robotworld.bus.MotorModuleProxy;
 import robotworld.core.MotorModule;
 
@@ -31,6 +34,27 @@ public final class SafeStates {
             }
         }
         return "motors 1-" + MotorModule.MOTORS + " set to 0";
+    }
+
+    /**
+     * Arms the communication watchdog of a module on the robot bus ({@code RS485Bus#armWatchdog}); does nothing for
+     * hardware that is not a bus module proxy, or when {@code millis} is 0.
+     *
+     * @param onTrip told whenever the module is found to have tripped
+     * @return whether the watchdog is armed
+     */
+    public static boolean armWatchdog(Object hardware, int millis, Consumer<String> onTrip) {
+        if (millis <= 0 || !(hardware instanceof ModuleProxy proxy)) {
+            return false;
+        }
+        return proxy.bus().armWatchdog(proxy.address(), Duration.ofMillis(millis), onTrip);
+    }
+
+    /** Stops feeding the watchdog of a bus module proxy armed with {@link #armWatchdog}. */
+    public static void releaseWatchdog(Object hardware) {
+        if (hardware instanceof ModuleProxy proxy) {
+            proxy.bus().watchdog().release(proxy.address());
+        }
     }
 
     /**

@@ -8,6 +8,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robotworld.safety.Actuator;
 import robotworld.safety.ActuatorGuard;
+import robotworld.safety.SafeStates;
 import robotworld.safety.StopCause;
 import robotworld.space.Entry;
 
@@ -65,12 +66,23 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         this.publishLocalCalls = runtime.publishLocalCallsByDefault();
         if (this instanceof Actuator actuator) {
             this.guard = runtime.safety().guard(participant, moduleName, actuator);
+            int watchdog = runtime.safety().watchdogMillis(participant, moduleName, defaultWatchdogMillis());
+            SafeStates.armWatchdog(hardware, watchdog,
+                    detail -> runtime.safety().watchdogTripped(participant, moduleName, detail));
         } else {
             this.guard = null;
             runtime.safety().serves(participant, moduleName);
         }
         this.server = new RequestServer(containers, participant + "/" + moduleName, this::answerAll,
                 () -> adaptiveBatching);
+    }
+
+    /**
+     * The bus watchdog an actuator of this type gets when neither the description nor a setting gives one, in ms
+     * (0 = none). Called during construction: return a constant.
+     */
+    protected int defaultWatchdogMillis() {
+        return 0;
     }
 
     /** Starts serving requests; the last statement of a subclass's constructor. */
@@ -180,6 +192,7 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
                 guard.stop(StopCause.PROGRAM_ENDED, "its proxy was closed", null, null);
             }
             runtime().safety().release(guard);
+            SafeStates.releaseWatchdog(hardware);
         }
     }
 

@@ -9,6 +9,7 @@ import robotworld.core.ModuleArguments;
 import robotworld.core.MotorModule;
 import robotworld.safety.Actuator;
 import robotworld.safety.SafeStates;
+import robotworld.safety.SafetySettings;
 import robotworld.space.Entry;
 
 /**
@@ -16,7 +17,8 @@ import robotworld.space.Entry;
  * {@code <key, motorNr, speedPerMille, "setMotor"|"setMotorQuiet">}.
  *
  * <p>An actuator: its safe state is every motor at 0 ({@link SafeStates#stopMotors}); it is engaged while any motor
- * was last commanded to a speed other than 0.
+ * was last commanded to a speed other than 0. A motor module on the bus has its communication watchdog armed
+ * (500 ms unless configured: {@link SafetySettings}), so it stops by itself if this program dies.
  */
 public class XVSMMotorModuleLocal extends XVSMLocalModule<MotorModule> implements MotorModule, Actuator {
 
@@ -57,6 +59,12 @@ public class XVSMMotorModuleLocal extends XVSMLocalModule<MotorModule> implement
             throw request.unknownFunction();
         }
         return request.fields();
+    }
+
+    /** Motor modules on the bus get a watchdog unless configured otherwise: they are what drives on. */
+    @Override
+    protected int defaultWatchdogMillis() {
+        return SafetySettings.DEFAULT_MOTOR_WATCHDOG_MILLIS;
     }
 
     @Override
