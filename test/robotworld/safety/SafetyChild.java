@@ -17,8 +17,11 @@ import robotworld.xvsm.XVSMRuntime;
  * serve  return|throw|exit|wait  SPACE_URL BUS_PORT   the robot's program: serves SafetyBot/Motor, sets motors 1
  *                                                     and 2 to 0.45, prints READY, then returns, throws, calls
  *                                                     System.exit(3) or waits to be killed
- * command SPACE_URL SPEED                             a remote commander: sets motors 1 and 2 of SafetyBot/Motor
- *                                                     through the space, prints READY, waits to be killed
+ * command SPACE_URL SPEED [GO_FILE]                   a remote commander: sets motors 1 and 2 of SafetyBot/Motor
+ *                                                     through the space, prints READY, waits to be killed; with
+ *                                                     GO_FILE, once that file exists, commands motor 1 again and
+ *                                                     prints TOLD (refused) or CARRIED (not), then once more:
+ *                                                     AGAIN
  * </pre>
  */
 public final class SafetyChild {
@@ -28,7 +31,7 @@ public final class SafetyChild {
 
     public static void main(String[] args) throws Exception {
         if (args[0].equals("command")) {
-            command(args[1], Double.parseDouble(args[2]));
+            command(args[1], Double.parseDouble(args[2]), args.length > 3 ? java.nio.file.Path.of(args[3]) : null);
             return;
         }
         String mode = args[1];
@@ -58,7 +61,7 @@ public final class SafetyChild {
         }
     }
 
-    private static void command(String spaceUrl, double speed) throws Exception {
+    private static void command(String spaceUrl, double speed, java.nio.file.Path go) throws Exception {
         try (XVSMRuntime runtime = XVSMRuntime.connect(spaceUrl, "laptop")) {
             XVSMMotorModuleRemote motor = runtime.own(new XVSMMotorModuleRemote(runtime, SafetyRig.ROBOT,
                     SafetyRig.MOTOR));
@@ -66,6 +69,21 @@ public final class SafetyChild {
             motor.setMotor(1, speed);
             motor.setMotor(2, speed);
             System.out.println("READY " + runtime.programId());
+            System.out.flush();
+            if (go == null) {
+                Thread.sleep(Long.MAX_VALUE);
+            }
+            while (!java.nio.file.Files.exists(go)) {
+                Thread.sleep(10);
+            }
+            try {
+                motor.setMotor(1, speed);
+                System.out.println("CARRIED");
+            } catch (robotworld.xvsm.ActuatorStoppedException told) {
+                System.out.println("TOLD " + told.getMessage());
+            }
+            motor.setMotor(1, speed);
+            System.out.println("AGAIN");
             System.out.flush();
             Thread.sleep(Long.MAX_VALUE);
         }
