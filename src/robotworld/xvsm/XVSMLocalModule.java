@@ -49,7 +49,8 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
     }
 
     private final H hardware;
-    private final ActuatorGuard guard;
+    /** Set by {@link #start()}, when the subclass is ready: null for a sensor. */
+    private volatile ActuatorGuard guard;
     private final RequestServer server;
     private volatile boolean publishLocalCalls;
     private volatile boolean adaptiveBatching;
@@ -64,29 +65,32 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         super(runtime, participant, moduleName);
         this.hardware = Objects.requireNonNull(hardware, "hardware");
         this.publishLocalCalls = runtime.publishLocalCallsByDefault();
-        if (this instanceof Actuator actuator) {
-            this.guard = runtime.safety().guard(participant, moduleName, actuator);
-            int watchdog = runtime.safety().watchdogMillis(participant, moduleName, defaultWatchdogMillis());
-            SafeStates.armWatchdog(hardware, watchdog,
-                    detail -> runtime.safety().watchdogTripped(participant, moduleName, detail));
-        } else {
-            this.guard = null;
-            runtime.safety().serves(participant, moduleName);
-        }
         this.server = new RequestServer(containers, participant + "/" + moduleName, this::answerAll,
                 () -> adaptiveBatching);
     }
 
     /**
      * The bus watchdog an actuator of this type gets when neither the description nor a setting gives one, in ms
-     * (0 = none). Called during construction: return a constant.
+     * (0 = none).
      */
     protected int defaultWatchdogMillis() {
         return 0;
     }
 
-    /** Starts serving requests; the last statement of a subclass's constructor. */
+    /**
+     * Starts serving requests; the last statement of a subclass's constructor. An actuator is guarded from here on,
+     * and its bus watchdog armed.
+     */
     protected final void start() {
+        XVSMRuntime runtime = runtime();
+        if (this instanceof Actuator actuator) {
+            guard = runtime.safety().guard(participant(), moduleName(), actuator);
+            int watchdog = runtime.safety().watchdogMillis(participant(), moduleName(), defaultWatchdogMillis());
+            SafeStates.armWatchdog(hardware, watchdog,
+                    detail -> runtime.safety().watchdogTripped(participant(), moduleName(), detail));
+        } else {
+            runtime.safety().serves(participant(), moduleName());
+        }
         server.start();
     }
 
@@ -122,6 +126,7 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
     protected final CallTuple callLocally(Object function, Object... args) {
         CallTuple request = CallTuple.of(hostName(), function, args);
         String commander = runtime().programId();
+        ActuatorGuard guard = this.guard;
         ActuatorGuard.Admission admission = guard == null ? null : guard.admit(commander, true);
         if (admission != null && !admission.admitted()) {
             ActuatorStoppedException refused = new ActuatorStoppedException(participant(), moduleName(),
@@ -187,6 +192,7 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         if (server != null) { // null when the constructor failed after registering with the runtime
             server.stop();
         }
+        ActuatorGuard guard = this.guard;
         if (guard != null) {
             if (!guard.hasEnded()) {
                 guard.stop(StopCause.PROGRAM_ENDED, "its proxy was closed", null, null);
@@ -242,6 +248,7 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
 
     private CallTuple answer(Performer performer, CallTuple request) {
         String commander = commanderOf(request.key());
+        ActuatorGuard guard = this.guard;
         ActuatorGuard.Admission admission = guard == null ? null : guard.admit(commander, isWaitingCall(request.key()));
         if (admission != null && !admission.admitted()) {
             return ErrorAnswer.stopped(request, admission.refusal().summary(), hostName()).toAnswer(request.key());

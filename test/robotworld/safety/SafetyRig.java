@@ -94,6 +94,51 @@ final class SafetyRig implements AutoCloseable {
         space.close();
     }
 
+    /** Writes the rig's RobotWorld (SafetyRoom with the lamp, SafetyBot with motor and bumper) to {@code file}. */
+    java.nio.file.Path writeWorld(java.nio.file.Path file) throws IOException {
+        java.nio.file.Files.writeString(file, """
+                <?xml version="1.0" encoding="UTF-8"?>
+                <RobotWorld xmlns="urn:robotworld:description">
+                  <WorldName>SafetyWorld</WorldName>
+                  <CommunicationType>xvsm</CommunicationType>
+                  <SpaceURL>%s</SpaceURL>
+                  <Environment>
+                    <EnvironmentName>SafetyRoom</EnvironmentName>
+                    <Host>room-pc</Host>
+                    <COMPort>%s</COMPort>
+                    <X10Module>
+                      <Name>Lamp</Name>
+                      <HouseCode>A</HouseCode>
+                      <UnitCode>ONE</UnitCode>
+                      <Class>X10LampModule</Class>
+                      <Version>1.0</Version>
+                    </X10Module>
+                  </Environment>
+                  <RobotDescription>
+                    <RobotName>SafetyBot</RobotName>
+                    <Host>robot-pc</Host>
+                    <COMPort>%s</COMPort>
+                    <TalkToBusClass>RS485Bus</TalkToBusClass>
+                    <Module>
+                      <Name>Motor</Name>
+                      <NodeID>15B63A4</NodeID>
+                      <NodeNumber>1</NodeNumber>
+                      <Class>MotorModule</Class>
+                      <Version>1.0</Version>
+                    </Module>
+                    <Module>
+                      <Name>Bumper</Name>
+                      <NodeID>15B63B2</NodeID>
+                      <NodeNumber>2</NodeNumber>
+                      <Class>BumperModule</Class>
+                      <Version>1.0</Version>
+                    </Module>
+                  </RobotDescription>
+                </RobotWorld>
+                """.formatted(spaceUrl, x10Port, busPort));
+        return file;
+    }
+
     /** Polls until {@code condition} holds; fails naming {@code what} after {@code limit}. */
     static void eventually(String what, Duration limit, BooleanSupplier condition) {
         long deadline = System.nanoTime() + limit.toNanos();
