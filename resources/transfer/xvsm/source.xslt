@@ -256,13 +256,20 @@
 
   <xsl:template name="main-and-control">
     <xsl:variable name="all" select="gen:modules($participants)"/>
-    <xsl:text>&#10;    /** Connects to the space, starts this participant, runs the control program, then serves until stopped. */&#10;</xsl:text>
+    <xsl:text>&#10;    /**&#10;     * Connects to the space, starts this participant, runs the control program, then serves until stopped.&#10;</xsl:text>
+    <xsl:text>     * However the program ends (return, exception, Ctrl-C, SIGTERM, System.exit), the runtime first puts the&#10;</xsl:text>
+    <xsl:text>     * actuators of this computer into their safe state (see docs/safety.md).&#10;     */&#10;</xsl:text>
     <xsl:text>    public static void main(String[] args) throws Exception {&#10;</xsl:text>
     <xsl:text>        try (XVSMRuntime runtime = XVSMRuntime.connect(SPACE_URL, HOST)) {&#10;</xsl:text>
-    <xsl:text>            </xsl:text><xsl:value-of select="gen:identifier($class-name)"/><xsl:text> program = new </xsl:text>
+    <xsl:text>            try {&#10;</xsl:text>
+    <xsl:text>                </xsl:text><xsl:value-of select="gen:identifier($class-name)"/><xsl:text> program = new </xsl:text>
     <xsl:value-of select="gen:identifier($class-name)"/><xsl:text>(runtime);&#10;</xsl:text>
-    <xsl:text>            program.control();&#10;</xsl:text>
-    <xsl:text>            runtime.serveUntilStopped();&#10;        }&#10;    }&#10;</xsl:text>
+    <xsl:text>                program.control();&#10;</xsl:text>
+    <xsl:text>                runtime.serveUntilStopped();&#10;</xsl:text>
+    <xsl:text>            } catch (Throwable failure) {&#10;</xsl:text>
+    <xsl:text>                runtime.failed(failure);&#10;</xsl:text>
+    <xsl:text>                throw failure;&#10;</xsl:text>
+    <xsl:text>            }&#10;        }&#10;    }&#10;</xsl:text>
     <xsl:text>&#10;    /**&#10;     * The control program. Every module of the world is a field of this class:&#10;</xsl:text>
     <xsl:for-each select="$all">
       <xsl:text>     * </xsl:text><xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text> (</xsl:text>

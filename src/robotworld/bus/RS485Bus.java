@@ -32,6 +32,7 @@ public final class RS485Bus implements Closeable {
     private final BusTiming timing;
     private final RtuMaster master;
     private final Map<Integer, String> moduleNames = new ConcurrentHashMap<>();
+    private final BusWatchdog watchdog = new BusWatchdog(this);
 
     /** Opens the bus on {@code portName} ({@code /dev/ttyUSB0}, {@code COM4}, {@code tcp://host:port}) at 115200 8N1. */
     public RS485Bus(String portName) throws IOException {
@@ -143,6 +144,7 @@ public final class RS485Bus implements Closeable {
     public void writeRegisterQuietly(int address, int register, int value) {
         master.callQuietly(checkAddress(address), Pdus.writeSingleRegister(register, value),
                 timing.responseTimeout());
+        watchdog.exchanged(address);
     }
 
     /** Writes consecutive holding registers and waits for the confirmation. */
@@ -192,13 +194,32 @@ public final class RS485Bus implements Closeable {
         master.listenForStrays(window, Pdus.readDeviceIdentification());
     }
 
+    // ----- safety -----
+
+    /**
+     * Arms the communication watchdog of the module at {@code address} and keeps it fed while this bus is open
+     * ({@link BusWatchdog}).
+     *
+     * @return false when the module has no watchdog (logged)
+     */
+    public boolean armWatchdog(int address, Duration timeout, Consumer<String> onTrip) {
+        return watchdog.arm(checkAddress(address), timeout, onTrip);
+    }
+
+    /** The watchdogs this bus keeps fed. */
+    public BusWatchdog watchdog() {
+        return watchdog;
+    }
+
     /** Counters since the bus was opened. */
     public BusStatistics statistics() {
         return master.statistics();
     }
 
+    /** Stops feeding the modules' watchdogs (they stay armed) and closes the link. */
     @Override
     public void close() throws IOException {
+        watchdog.close();
         link.close();
     }
 
@@ -208,8 +229,15 @@ public final class RS485Bus implements Closeable {
     }
 
     private byte[] call(int address, byte[] pdu) {
-        return master.call(checkAddress(address), pdu,
-                new RtuMaster.CallPolicy(timing.responseTimeout(), timing.attempts(), true));
+        try {
+            byte[] reply = master.call(checkAddress(address), pdu,
+                    new RtuMaster.CallPolicy(timing.responseTimeout(), timing.attempts(), true));
+            watchdog.exchanged(address);
+            return reply;
+        } catch (ModuleRefusedException refused) {
+            watchdog.exchanged(address); // a refusal is an answer: the module heard the request
+            throw refused;
+        }
     }
 
     private interface Decoder<T> {

@@ -14,14 +14,23 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
+import javax.swing.JFileChooser;
+import javax.swing.JOptionPane;
+import robotworld.description.DescriptionException;
+import robotworld.description.DescriptionLoader;
+import robotworld.description.DescriptionSchemas;
 import robotworld.explorer.frames.ExploreFrame;
 import robotworld.explorer.frames.GenerateFrame;
 import robotworld.explorer.frames.MonitorFrame;
+import robotworld.explorer.monitor.MonitorSpace;
+import robotworld.explorer.monitor.MonitoredWorld;
+import robotworld.explorer.stop.StopButton;
 
 /**
  * The RobotWorldExplorer launcher (thesis figure 4.1): a main window with three choices, explore a robot,
  * generate a framework, monitor a world; each opens its own window. Start it with {@code ./antw run}, or
- * {@code rwe} without a verb on a desktop.
+ * {@code rwe} without a verb on a desktop. Below them, always visible, the STOP button stops every actuator of a
+ * world: the first click asks which world (a RobotWorld file), later clicks stop the same one at once.
  */
 public final class RobotWorldExplorer extends JFrame {
 
@@ -32,6 +41,9 @@ public final class RobotWorldExplorer extends JFrame {
     private final JButton explore;
     private final JButton generate;
     private final JButton monitor;
+    private final StopButton stop;
+    private final JLabel stopWorld = new JLabel("STOP asks for the world to stop the first time.");
+    private volatile StopButton.Scope stopScope;
 
     /** The main window; {@code home} holds {@code ModuleDescriptions/} and receives robot descriptions. */
     public RobotWorldExplorer(Path home) {
@@ -50,6 +62,15 @@ public final class RobotWorldExplorer extends JFrame {
         content.add(new JLabel("<html>Describe the robots and environments of a RobotWorld, generate a control"
                 + " framework for any of its computers,<br>and watch the modules at work.</html>"), BorderLayout.NORTH);
         content.add(buttons, BorderLayout.CENTER);
+        stop = new StopButton("STOP button of the launcher", this::stopScope);
+        JButton change = new JButton("World to stop...");
+        change.setMnemonic('W');
+        change.addActionListener(event -> chooseWorldToStop());
+        JPanel stopBar = new JPanel(new BorderLayout(8, 4));
+        stopBar.add(stop, BorderLayout.NORTH);
+        stopBar.add(stopWorld, BorderLayout.CENTER);
+        stopBar.add(change, BorderLayout.EAST);
+        content.add(stopBar, BorderLayout.SOUTH);
         setContentPane(content);
         pack();
         setLocationRelativeTo(null);
@@ -101,6 +122,43 @@ public final class RobotWorldExplorer extends JFrame {
     /** The "Monitor a world" button. */
     public JButton monitorButton() {
         return monitor;
+    }
+
+    /** The STOP button. */
+    public StopButton stopButton() {
+        return stop;
+    }
+
+    /** Sets the world the STOP button stops (its space: the override or the world's {@code <SpaceURL>}). */
+    public void setWorldToStop(MonitoredWorld world, String spaceUrl) {
+        stopScope = new StopButton.Scope(world, spaceUrl, null);
+        stopWorld.setText("STOP stops every actuator of " + world.name() + " through " + spaceUrl);
+    }
+
+    private StopButton.Scope stopScope() {
+        if (stopScope == null) {
+            chooseWorldToStop();
+        }
+        return stopScope;
+    }
+
+    private void chooseWorldToStop() {
+        JFileChooser chooser = new JFileChooser(home.toFile());
+        chooser.setDialogTitle("The RobotWorld to stop");
+        if (chooser.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        try {
+            MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(chooser.getSelectedFile().toPath(),
+                    DescriptionSchemas.configured()));
+            setWorldToStop(world, MonitorSpace.url(null, world));
+        } catch (DescriptionException e) {
+            JOptionPane.showMessageDialog(this, e.errors().get(0).toString(), "Not a valid RobotWorld",
+                    JOptionPane.ERROR_MESSAGE);
+        } catch (IllegalStateException e) {
+            JOptionPane.showMessageDialog(this, e.getMessage(), "No space to stop it through",
+                    JOptionPane.ERROR_MESSAGE);
+        }
     }
 
     private static JButton choice(String text, char mnemonic, Supplier<JFrame> window) {

@@ -31,7 +31,12 @@ record ErrorAnswer(Entry failedFunction, Kind kind, String type, String message,
         /** The hardware failed otherwise: the caller gets an {@link XVSMRemoteException}. */
         FAILURE,
         /** The request was malformed or named an unknown function: an {@link XVSMRemoteException} too. */
-        REQUEST;
+        REQUEST,
+        /**
+         * The actuator had been stopped since the caller last commanded it, and the call was not carried out: the
+         * caller gets an {@link ActuatorStoppedException}.
+         */
+        STOPPED;
 
         String wireName() {
             return name().toLowerCase(Locale.ROOT);
@@ -51,6 +56,11 @@ record ErrorAnswer(Entry failedFunction, Kind kind, String type, String message,
     static ErrorAnswer of(CallTuple request, Throwable failure, String host) {
         return new ErrorAnswer(request.function(), classify(failure), failure.getClass().getName(),
                 failure.getMessage() == null ? failure.getClass().getSimpleName() : failure.getMessage(), host);
+    }
+
+    /** The answer refusing {@code request} because the actuator was stopped; {@code stop} says how, in words. */
+    static ErrorAnswer stopped(CallTuple request, String stop, String host) {
+        return new ErrorAnswer(request.function(), Kind.STOPPED, ActuatorStoppedException.class.getName(), stop, host);
     }
 
     /** Whether an answer is an error answer. */
@@ -82,10 +92,14 @@ record ErrorAnswer(Entry failedFunction, Kind kind, String type, String message,
             case TIMEOUT -> new ModuleCallTimeoutException(participant, module, function, -1,
                     where + ": the hardware did not answer host " + host + ": " + message);
             case FAILURE, REQUEST -> new XVSMRemoteException(participant, module, function, host, type, message);
+            case STOPPED -> new ActuatorStoppedException(participant, module, function, host, message);
         };
     }
 
     private static Kind classify(Throwable failure) {
+        if (failure instanceof ActuatorStoppedException) {
+            return Kind.STOPPED;
+        }
         if (failure instanceof MalformedCallException) {
             return Kind.REQUEST;
         }

@@ -6,6 +6,10 @@ import java.util.Objects;
 import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robotworld.safety.Actuator;
+import robotworld.safety.ActuatorGuard;
+import robotworld.safety.SafeStates;
+import robotworld.safety.StopCause;
 import robotworld.space.Entry;
 
 /**
@@ -17,6 +21,12 @@ import robotworld.space.Entry;
  *
  * <p>A failed hardware call is answered with an error answer, and the thread goes on serving. Sensor modules may
  * batch: take every waiting request, read the hardware once, answer all ({@link #batchPerformer()}).
+ *
+ * <p><b>Actuators</b> (subclasses that implement {@link Actuator}) are guarded by the program's safety layer
+ * ({@code robotworld.safety}): every command, local or remote, is first admitted by the actuator's
+ * {@link ActuatorGuard}, which refuses it (without carrying it out) when the actuator was stopped since its
+ * commander last commanded it; the caller gets an {@link ActuatorStoppedException}. Closing the proxy, or the
+ * runtime, puts the actuator into its safe state.
  *
  * <p>Subclasses map their interface onto tuples: each interface method calls {@link #callLocally}, and
  * {@link #perform} carries out a request, for local and remote callers alike. A subclass constructor ends with
@@ -39,6 +49,8 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
     }
 
     private final H hardware;
+    /** Set by {@link #start()}, when the subclass is ready: null for a sensor. */
+    private volatile ActuatorGuard guard;
     private final RequestServer server;
     private volatile boolean publishLocalCalls;
     private volatile boolean adaptiveBatching;
@@ -57,8 +69,28 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
                 () -> adaptiveBatching);
     }
 
-    /** Starts serving requests; the last statement of a subclass's constructor. */
+    /**
+     * The bus watchdog an actuator of this type gets when neither the description nor a setting gives one, in ms
+     * (0 = none).
+     */
+    protected int defaultWatchdogMillis() {
+        return 0;
+    }
+
+    /**
+     * Starts serving requests; the last statement of a subclass's constructor. An actuator is guarded from here on,
+     * and its bus watchdog armed.
+     */
     protected final void start() {
+        XVSMRuntime runtime = runtime();
+        if (this instanceof Actuator actuator) {
+            guard = runtime.safety().guard(participant(), moduleName(), actuator);
+            int watchdog = runtime.safety().watchdogMillis(participant(), moduleName(), defaultWatchdogMillis());
+            SafeStates.armWatchdog(hardware, watchdog,
+                    detail -> runtime.safety().watchdogTripped(participant(), moduleName(), detail));
+        } else {
+            runtime.safety().serves(participant(), moduleName());
+        }
         server.start();
     }
 
@@ -93,15 +125,33 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
      */
     protected final CallTuple callLocally(Object function, Object... args) {
         CallTuple request = CallTuple.of(hostName(), function, args);
+        String commander = runtime().programId();
+        ActuatorGuard guard = this.guard;
+        ActuatorGuard.Admission admission = guard == null ? null : guard.admit(commander, true);
+        if (admission != null && !admission.admitted()) {
+            ActuatorStoppedException refused = new ActuatorStoppedException(participant(), moduleName(),
+                    request.functionText(), hostName(), admission.refusal().summary());
+            publish(ErrorAnswer.of(request, refused, hostName()).toAnswer(hostName()));
+            throw refused;
+        }
         CallTuple answer;
         try {
             answer = request.withFields(perform(request));
         } catch (RuntimeException e) {
             publish(ErrorAnswer.of(request, e, hostName()).toAnswer(hostName()));
             throw e;
+        } finally {
+            if (admission != null) {
+                guard.performed(commander, admission);
+            }
         }
         publish(answer);
         return answer;
+    }
+
+    /** The actuator's guard, or null for a sensor. */
+    protected final ActuatorGuard guard() {
+        return guard;
     }
 
     /** Whether local calls are published into the ANSWER container. */
@@ -129,7 +179,10 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         return server.isRunning();
     }
 
-    /** Stops the serving thread after it has answered what it has taken; idempotent. The hardware stays open. */
+    /**
+     * Stops the serving thread after it has answered what it has taken, and puts an actuator into its safe state
+     * (unless the runtime's close already did); idempotent. The hardware stays open.
+     */
     @Override
     public void close() {
         if (closed) {
@@ -138,6 +191,14 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         closed = true;
         if (server != null) { // null when the constructor failed after registering with the runtime
             server.stop();
+        }
+        ActuatorGuard guard = this.guard;
+        if (guard != null) {
+            if (!guard.hasEnded()) {
+                guard.stop(StopCause.PROGRAM_ENDED, "its proxy was closed", null, null);
+            }
+            runtime().safety().release(guard);
+            SafeStates.releaseWatchdog(hardware);
         }
     }
 
@@ -186,6 +247,12 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
     }
 
     private CallTuple answer(Performer performer, CallTuple request) {
+        String commander = commanderOf(request.key());
+        ActuatorGuard guard = this.guard;
+        ActuatorGuard.Admission admission = guard == null ? null : guard.admit(commander, isWaitingCall(request.key()));
+        if (admission != null && !admission.admitted()) {
+            return ErrorAnswer.stopped(request, admission.refusal().summary(), hostName()).toAnswer(request.key());
+        }
         try {
             return request.withFields(performer.perform(request));
         } catch (VirtualMachineError fatal) {
@@ -193,6 +260,29 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         } catch (Throwable failure) { // the thread must survive any failure of the hardware or its proxy
             LOG.debug("{}/{} {} failed: {}", participant(), moduleName(), request.functionText(), failure.toString());
             return ErrorAnswer.of(request, failure, hostName()).toAnswer(request.key());
+        } finally {
+            if (admission != null) {
+                guard.performed(commander, admission);
+            }
         }
+    }
+
+    /**
+     * The program that sent a request: {@code host#run} of the key {@code host#run.n} (a call that waits for its
+     * answer) or {@code host#run} (a quiet call); a key without {@code #} is taken as it is.
+     */
+    static String commanderOf(String key) {
+        int hash = key.indexOf('#');
+        if (hash < 0) {
+            return key;
+        }
+        int dot = key.indexOf('.', hash);
+        return dot < 0 ? key : key.substring(0, dot);
+    }
+
+    /** Whether the caller of a request waits for its answer (its key has a call number, {@code host#run.n}). */
+    static boolean isWaitingCall(String key) {
+        int hash = key.indexOf('#');
+        return hash >= 0 && key.indexOf('.', hash) >= 0;
     }
 }

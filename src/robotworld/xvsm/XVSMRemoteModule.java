@@ -55,9 +55,11 @@ public abstract class XVSMRemoteModule extends XVSMModule {
 
     /**
      * Sends a request without waiting for its answer, for the "quiet" functions that do not wait for the
-     * hardware locally either. The request's key is the plain host name, so its answer lands where this host's
-     * previous answer of that kind was (the thesis's key), displacing it: nothing piles up, and monitors still
-     * see it. A hardware failure is not reported back, as in a local quiet call.
+     * hardware locally either. The request's key is this program's id {@code host#run} (the thesis's host name,
+     * with the run that tells this program from another one on the same host), so its answer lands where this
+     * program's previous answer of that kind was, displacing it: nothing piles up, and monitors still see it. A
+     * hardware failure is not reported back, as in a local quiet call; nor is a refusal because the actuator was
+     * stopped (the next call that waits for its answer is told).
      *
      * @throws ModuleCallException when the request cannot be written into the space
      */
@@ -65,7 +67,7 @@ public abstract class XVSMRemoteModule extends XVSMModule {
         if (closed) {
             throw new IllegalStateException(this + " is closed");
         }
-        CallTuple request = CallTuple.of(hostName(), function, args);
+        CallTuple request = CallTuple.of(runtime().programId(), function, args);
         new RemoteCall(this, request, functionName(request.function()), callTimeout.toMillis()).send();
     }
 

@@ -17,6 +17,9 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robotworld.core.HostNames;
 import robotworld.core.RuntimeSettings;
+import robotworld.safety.SafetySettings;
+import robotworld.safety.SafetySupervisor;
+import robotworld.safety.StopCause;
 import robotworld.space.Capi;
 import robotworld.space.remote.RemoteSpace;
 
@@ -56,6 +59,8 @@ public final class XVSMRuntime implements AutoCloseable {
     private final LocalPublisher publisher;
     private final AbandonedCalls abandoned;
     private final String callKeyPrefix;
+    private final String programId;
+    private final SafetySupervisor safety;
     private final AtomicLong calls = new AtomicLong();
     private final Deque<AutoCloseable> owned = new ArrayDeque<>();
     private final CountDownLatch closedLatch = new CountDownLatch(1);
@@ -84,7 +89,9 @@ public final class XVSMRuntime implements AutoCloseable {
         this.publisher = new LocalPublisher(background);
         this.abandoned = new AbandonedCalls(background);
         // the tag tells this run's calls from those of an earlier run with the same host name
-        this.callKeyPrefix = hostName + "#" + Long.toString(ThreadLocalRandom.current().nextLong() >>> 28, 36) + ".";
+        this.programId = hostName + "#" + Long.toString(ThreadLocalRandom.current().nextLong() >>> 28, 36);
+        this.callKeyPrefix = programId + ".";
+        this.safety = new SafetySupervisor(space, programId, hostName, SafetySettings.fromSystem());
     }
 
     /**
@@ -169,10 +176,7 @@ public final class XVSMRuntime implements AutoCloseable {
     public void serveUntilStopped() throws InterruptedException {
         long serving;
         synchronized (this) {
-            if (!closing && shutdownHook == null) {
-                shutdownHook = new Thread(this::close, "xvsm-runtime-shutdown " + hostName);
-                Runtime.getRuntime().addShutdownHook(shutdownHook);
-            }
+            closeOnShutdown();
             serving = owned.stream().filter(XVSMLocalModule.class::isInstance).count();
         }
         // a provider is otherwise silent: say once what it does and how to stop it
@@ -181,12 +185,29 @@ public final class XVSMRuntime implements AutoCloseable {
     }
 
     /**
-     * Closes owned resources in reverse order (module proxies stop their threads), publishes what local calls
-     * left queued (for at most a second), tidies up after abandoned calls, and closes the space if this runtime
-     * opened it. Idempotent; failures while closing are logged, not thrown.
+     * Puts every actuator this program serves into its safe state at once, because the program failed; every later
+     * command of an actuator is refused. For a {@code catch} around the control program: the runtime's close (in a
+     * {@code finally} or try-with-resources) then finds them stopped. Generated main classes do this.
+     *
+     * @param failure what the program failed with, for the log and the stop records
+     */
+    public void failed(Throwable failure) {
+        safety.stopAll(StopCause.PROGRAM_FAILED, "the program failed: " + failure);
+    }
+
+    /**
+     * Closes the runtime: first puts every actuator this program serves into its safe state (motors 0, servos
+     * hold, X10 modules as configured) and refuses later commands, then closes owned resources in reverse order
+     * (module proxies stop their threads), publishes what local calls left queued (for at most a second), tidies
+     * up after abandoned calls, sends a last heartbeat saying the program ended, and closes the space if this
+     * runtime opened it. Idempotent; failures while closing are logged, not thrown.
      */
     @Override
     public void close() {
+        close(StopCause.PROGRAM_ENDED, "the program ended");
+    }
+
+    private void close(StopCause cause, String reason) {
         List<AutoCloseable> resources;
         synchronized (this) {
             if (closing) {
@@ -196,6 +217,8 @@ public final class XVSMRuntime implements AutoCloseable {
             resources = new ArrayList<>(owned);
             owned.clear();
         }
+        // actuators first: the hardware below them is closed next
+        safety.stopAll(cause, reason);
         resources.forEach(XVSMRuntime::closeQuietly);
         try {
             publisher.awaitPublished(PUBLISH_GRACE_MILLIS);
@@ -204,6 +227,7 @@ public final class XVSMRuntime implements AutoCloseable {
         }
         background.shutdownNow();
         abandoned.sweepNow();
+        safety.close(cause, reason);
         if (ownsSpace) {
             closeQuietly(space);
         }
@@ -250,9 +274,42 @@ public final class XVSMRuntime implements AutoCloseable {
 
     // ----- for the module proxies -----
 
+    /**
+     * The safety layer of this program: the guards of the actuators it serves, its heartbeat, the rules that stop
+     * actuators (see {@code robotworld.safety}), and its safety settings.
+     */
+    public SafetySupervisor safety() {
+        return safety;
+    }
+
+    /**
+     * This program's id in the space, {@code host#run}: the prefix of its call keys, the key of its heartbeat, and
+     * how the programs serving actuators name their commanders.
+     */
+    public String programId() {
+        return programId;
+    }
+
     /** Registers a module proxy, so closing the runtime stops it even if nobody owns it explicitly. */
     void register(XVSMModule module) {
         own(module);
+        if (module instanceof robotworld.safety.Actuator) {
+            synchronized (this) {
+                closeOnShutdown();
+            }
+        }
+    }
+
+    /**
+     * A JVM shutdown (Ctrl-C, SIGTERM, {@code System.exit}) closes the runtime, which first stops the actuators.
+     * Installed when the first actuator is served, or by {@link #serveUntilStopped()}. Called with the lock held.
+     */
+    private void closeOnShutdown() {
+        if (!closing && shutdownHook == null) {
+            shutdownHook = new Thread(() -> close(StopCause.SHUTDOWN,
+                    "the JVM is shutting down (Ctrl-C, SIGTERM or System.exit)"), "xvsm-runtime-shutdown " + hostName);
+            Runtime.getRuntime().addShutdownHook(shutdownHook);
+        }
     }
 
     /** A key no other call of any host uses: {@code host#run.n}. */

@@ -6,13 +6,19 @@ import static robotworld.xvsm.ServoTuples.SET_SERVO_QUIET;
 import java.util.List;
 import robotworld.core.ModuleArguments;
 import robotworld.core.ServoModule;
+import robotworld.safety.Actuator;
+import robotworld.safety.SafeStates;
 import robotworld.space.Entry;
 
 /**
  * A servo module attached to this computer, shared through the space. Requests and answers:
  * {@code <key, servoNr, position, "setServo"|"setServoQuiet">}.
+ *
+ * <p>An actuator whose safe state is to hold: stopping sends nothing, so every servo keeps its target (it is never
+ * made limp, which could drop what it holds). It is never engaged, so losing its commander changes nothing; a stop
+ * still makes its commanders' next calls be refused, so they learn of it.
  */
-public class XVSMServoModuleLocal extends XVSMLocalModule<ServoModule> implements ServoModule {
+public class XVSMServoModuleLocal extends XVSMLocalModule<ServoModule> implements ServoModule, Actuator {
 
     /** Serves {@code <participant><moduleName>REQUEST} for {@code hardware} with a thread of its own. */
     public XVSMServoModuleLocal(XVSMRuntime runtime, String participant, String moduleName, ServoModule hardware) {
@@ -43,5 +49,15 @@ public class XVSMServoModuleLocal extends XVSMLocalModule<ServoModule> implement
             throw request.unknownFunction();
         }
         return request.fields();
+    }
+
+    @Override
+    public String enterSafeState() {
+        return SafeStates.SERVOS_HOLD;
+    }
+
+    @Override
+    public boolean isEngaged() {
+        return false;
     }
 }

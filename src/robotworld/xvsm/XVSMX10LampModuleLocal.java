@@ -8,18 +8,29 @@ import static robotworld.xvsm.X10Tuples.ON;
 
 import java.util.List;
 import robotworld.core.X10LampModule;
+import robotworld.safety.Actuator;
+import robotworld.safety.SafeStates;
+import robotworld.safety.X10SafeState;
 import robotworld.space.Entry;
 
 /**
  * An X10 lamp module driven by this computer's CM11A, shared through the space. Requests and answers:
  * {@code <key, level, "on"|"off"|"brighten"|"dim">}, level 0 for on and off.
+ *
+ * <p>An actuator whose safe state is configured ({@link X10SafeState}, default: left as it is); it is engaged
+ * while it was last switched away from that state (brighten and dim count as on).
  */
-public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> implements X10LampModule {
+public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> implements X10LampModule, Actuator {
+
+    private final X10SafeState safeState;
+    /** Whether it was last switched on (or brightened, dimmed); null before the first command. */
+    private volatile Boolean switchedOn;
 
     /** Serves {@code <participant><moduleName>REQUEST} for {@code hardware} with a thread of its own. */
     public XVSMX10LampModuleLocal(XVSMRuntime runtime, String participant, String moduleName,
                                   X10LampModule hardware) {
         super(runtime, participant, moduleName, hardware);
+        safeState = runtime.safety().x10SafeState(participant, moduleName);
         start();
     }
 
@@ -47,6 +58,9 @@ public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> imple
     protected List<Entry> perform(CallTuple request) {
         request.expectFields(1);
         int level = request.intAt(0);
+        if (request.is(ON) || request.is(OFF) || request.is(BRIGHTEN) || request.is(DIM)) {
+            switchedOn = !request.is(OFF);
+        }
         if (request.is(ON)) {
             hardware().on();
         } else if (request.is(OFF)) {
@@ -59,5 +73,20 @@ public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> imple
             throw request.unknownFunction();
         }
         return request.fields();
+    }
+
+    @Override
+    public String enterSafeState() {
+        String done = SafeStates.x10(safeState, hardware()::on, hardware()::off);
+        if (safeState != X10SafeState.UNCHANGED) {
+            switchedOn = safeState == X10SafeState.ON;
+        }
+        return done;
+    }
+
+    @Override
+    public boolean isEngaged() {
+        Boolean on = switchedOn;
+        return on != null && (safeState == X10SafeState.OFF && on || safeState == X10SafeState.ON && !on);
     }
 }

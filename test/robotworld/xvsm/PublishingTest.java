@@ -106,13 +106,15 @@ class PublishingTest {
     }
 
     @Test
-    void quietRemoteCallsAreAnsweredUnderThePlainHostName() throws Exception {
+    void quietRemoteCallsAreAnsweredUnderTheProgramsId() throws Exception {
         BlockingQueue<Notification> seen = watch(world.motor.answerContainer());
-        XVSMMotorModuleRemote remote = new XVSMMotorModuleRemote(world.host("laptop"), ROBOT, MOTOR);
+        XVSMRuntime laptop = world.host("laptop");
+        XVSMMotorModuleRemote remote = new XVSMMotorModuleRemote(laptop, ROBOT, MOTOR);
         remote.setMotorQuiet(3, 0.5);
         remote.setMotorQuiet(3, 0.75);
-        assertShift(Tuple.of("laptop", 3, 500, "setMotorQuiet"), seen);
-        assertShift(Tuple.of("laptop", 3, 750, "setMotorQuiet"), seen);
+        assertTrue(laptop.programId().startsWith("laptop#"), laptop.programId());
+        assertShift(Tuple.of(laptop.programId(), 3, 500, "setMotorQuiet"), seen);
+        assertShift(Tuple.of(laptop.programId(), 3, 750, "setMotorQuiet"), seen);
         assertEquals(1, monitor.describeContainer(world.motor.answerContainer()).size(), "nothing piles up");
     }
 

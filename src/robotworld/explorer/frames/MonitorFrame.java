@@ -19,11 +19,13 @@ import robotworld.explorer.monitor.MonitorLoader;
 import robotworld.explorer.monitor.MonitorSpace;
 import robotworld.explorer.monitor.MonitoredWorld;
 import robotworld.explorer.monitor.WorldMonitor;
+import robotworld.explorer.stop.StopButton;
 import robotworld.space.Capi;
 
 /**
  * "Monitor a world": choose a world file and, optionally, the space URL (blank: the override or the world's
- * {@code <SpaceURL>}), then open one monitoring window per participant. Connecting runs off the Swing thread.
+ * {@code <SpaceURL>}), then open one monitoring window per participant. Connecting runs off the Swing thread. The
+ * STOP button at the top stops every actuator of the chosen world.
  */
 public final class MonitorFrame extends JFrame {
 
@@ -35,6 +37,7 @@ public final class MonitorFrame extends JFrame {
     private final JButton start = Form.button("Open monitors", 'O', event -> start());
     private final Status status = new Status("Choose a world; leave the space URL blank to use the world's.");
     private final List<WorldMonitor> opened = new ArrayList<>();
+    private final StopButton stop = new StopButton("STOP button of the monitor frame", this::stopScope);
 
     public MonitorFrame() {
         super(TITLE);
@@ -45,6 +48,7 @@ public final class MonitorFrame extends JFrame {
         JPanel buttons = new JPanel(new BorderLayout());
         buttons.add(start, BorderLayout.EAST);
         form.wide(buttons);
+        getContentPane().add(stop, BorderLayout.NORTH);
         getContentPane().add(form, BorderLayout.CENTER);
         getContentPane().add(status, BorderLayout.SOUTH);
         getRootPane().setDefaultButton(start);
@@ -71,9 +75,32 @@ public final class MonitorFrame extends JFrame {
         return status.getText();
     }
 
+    /** The STOP button. */
+    public StopButton stopButton() {
+        return stop;
+    }
+
     /** The world monitors opened from this frame. */
     public List<WorldMonitor> opened() {
         return List.copyOf(opened);
+    }
+
+    /** The world in the fields, for the STOP button; null (and the status says why) when there is none. */
+    private StopButton.Scope stopScope() {
+        Path file = worldFile.path();
+        if (file == null) {
+            status.error("Type or choose the world to stop first.");
+            return null;
+        }
+        try {
+            MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(file, DescriptionSchemas.configured()));
+            return new StopButton.Scope(world, MonitorSpace.url(spaceUrl.getText(), world), null);
+        } catch (DescriptionException e) {
+            status.error("Cannot stop: " + e.errors().size() + " problem(s) in the world, first: " + e.errors().get(0));
+        } catch (IllegalStateException e) {
+            status.error("Cannot stop: " + e.getMessage());
+        }
+        return null;
     }
 
     private void start() {

@@ -11,13 +11,16 @@ import java.util.Locale;
 import robotworld.explorer.monitor.logic.xvsm.AnswerListener;
 import robotworld.explorer.monitor.logic.xvsm.AnswerText;
 import robotworld.explorer.monitor.logic.xvsm.AnswerWatcher;
+import robotworld.safety.StopRecord;
+import robotworld.safety.StopWatcher;
 import robotworld.space.Capi;
 import robotworld.xvsm.CallTuple;
 
 /**
  * Monitoring as text, for machines without a display: one line per answer of any module of the world,
  * {@code time participant module function value (host)}. Works for every module type, known or not, because it
- * only reads the common answer layout.
+ * only reads the common answer layout. A stop of one of the world's actuators is a line too:
+ * {@code time participant module STOPPED by ... (cause: reason): what was done}.
  */
 public final class ConsoleMonitor implements AutoCloseable {
 
@@ -25,6 +28,8 @@ public final class ConsoleMonitor implements AutoCloseable {
 
     private final PrintWriter out;
     private final List<AnswerWatcher> watchers = new ArrayList<>();
+    private final java.util.Set<String> modules = new java.util.HashSet<>();
+    private StopWatcher stops;
 
     /**
      * Starts watching every module of {@code world} in {@code space}.
@@ -38,8 +43,10 @@ public final class ConsoleMonitor implements AutoCloseable {
                 for (MonitoredModule module : participant.modules()) {
                     watchers.add(new AnswerWatcher(space, module.participant(), module.moduleName(),
                             new Printer(module)).start());
+                    modules.add(module.label());
                 }
             }
+            stops = StopWatcher.start(space, this::stopped);
         } catch (RuntimeException e) {
             close();
             throw e;
@@ -54,6 +61,22 @@ public final class ConsoleMonitor implements AutoCloseable {
     @Override
     public void close() {
         watchers.forEach(AnswerWatcher::close);
+        if (stops != null) {
+            stops.close();
+        }
+    }
+
+    private void stopped(StopRecord record) {
+        if (modules.contains(record.where())) {
+            print(stopLine(record));
+        }
+    }
+
+    /** The line for a stop of one of the world's actuators. */
+    static String stopLine(StopRecord record) {
+        return String.format(Locale.ROOT, "%-12s  %-18s %-18s STOPPED by %s (%s: %s): %s",
+                TIME.format(LocalTime.ofInstant(record.at(), ZoneId.systemDefault())), record.participant(),
+                record.module(), record.stoppedBy(), record.cause().wireName(), record.reason(), record.action());
     }
 
     /** The line for one answer; {@code when} null for one found when monitoring started. */

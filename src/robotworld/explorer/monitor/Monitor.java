@@ -26,6 +26,13 @@ public interface Monitor extends AutoCloseable {
         return true;
     }
 
+    /**
+     * The module was put into its safe state (see {@code robotworld.safety}): the panel says who stopped it, when
+     * and why, until the module is commanded again. Called on any thread. Default: nothing.
+     */
+    default void stopped(robotworld.safety.StopRecord record) {
+    }
+
     /** Stops watching (cancels subscriptions); idempotent. The panel stays as it was. */
     @Override
     void close();

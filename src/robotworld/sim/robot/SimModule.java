@@ -12,6 +12,7 @@ public abstract class SimModule {
     private final int address;
     private final ModuleIdentity identity;
     private final ModuleFaults faults;
+    private final ModuleWatchdog watchdog = new ModuleWatchdog();
 
     protected SimModule(int address, ModuleIdentity identity, ModuleFaults faults) {
         if (address < 1 || address > 247) {
@@ -32,6 +33,33 @@ public abstract class SimModule {
 
     public ModuleFaults faults() {
         return faults;
+    }
+
+    /** The module's communication watchdog (see {@link ModuleWatchdog}). */
+    ModuleWatchdog watchdog() {
+        return watchdog;
+    }
+
+    /** The watchdog timeout the master set, in ms; 0 when off. */
+    public int watchdogMillis() {
+        return watchdog.timeoutMillis();
+    }
+
+    /** Whether the watchdog tripped since the master last set its timeout. */
+    public boolean watchdogTripped() {
+        return watchdog.tripped();
+    }
+
+    /** How often the watchdog has tripped. */
+    public long watchdogTrips() {
+        return watchdog.trips();
+    }
+
+    /**
+     * Goes to the module's safe state because its watchdog tripped: motors stop; servos hold (nothing changes);
+     * sensors have none. The default does nothing.
+     */
+    void enterSafeState() {
     }
 
     /** The module class it simulates, e.g. "BumperModule". */

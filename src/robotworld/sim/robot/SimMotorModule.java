@@ -102,6 +102,15 @@ public final class SimMotorModule extends SimModule {
         }
     }
 
+    /** The watchdog tripped: every motor is set to 0 (the actual speed follows at the ramp rate). */
+    @Override
+    void enterSafeState() {
+        java.util.Arrays.fill(set, 0);
+        if (rampPerSecond == 0) {
+            java.util.Arrays.fill(actual, 0);
+        }
+    }
+
     @Override
     void step(double seconds) {
         double maxChange = rampPerSecond * seconds;

@@ -78,6 +78,7 @@ public final class Simulation implements AutoCloseable {
             java.util.concurrent.locks.LockSupport.parkNanos(TICK_NANOS);
             long now = System.nanoTime();
             step((now - last) / 1e9 * timeScale);
+            checkWatchdogs(now);
             last = now;
         }
     }
@@ -108,9 +109,23 @@ public final class Simulation implements AutoCloseable {
         return Collections.unmodifiableMap(modules);
     }
 
-    /** Answers a request PDU for {@code module} under the lock. */
+    /** Answers a request PDU for {@code module} under the lock; the request feeds the module's watchdog. */
     synchronized byte[] respond(SimModule module, byte[] request) {
-        return RequestHandler.respond(module, request);
+        module.watchdog().fed(System.nanoTime());
+        byte[] watchdogAnswer = module.faults().refusal() == 0 ? module.watchdog().respond(request) : null;
+        return watchdogAnswer != null ? watchdogAnswer : RequestHandler.respond(module, request);
+    }
+
+    /**
+     * Trips the watchdogs whose timeout has run out, at real time {@code nanos}: the ticker calls it; tests that
+     * step by hand may too.
+     */
+    public synchronized void checkWatchdogs(long nanos) {
+        for (SimModule module : modules.values()) {
+            if (module.watchdog().expires(nanos)) {
+                module.enterSafeState();
+            }
+        }
     }
 
     /** Applies a broadcast request to every module (no answers). */

@@ -11,8 +11,9 @@ import javax.swing.JPanel;
 
 /**
  * The frame every module panel shares: a titled border {@code <Class>: <Name>} (as in the thesis figures), the
- * module-specific body, and a status area with the {@link FreshnessLabel} and the last problem reported (a
- * failed call). Subclasses put their body in with {@link #setBody}. Swing thread only.
+ * module-specific body, and a status area with the {@link FreshnessLabel}, the last problem reported (a failed
+ * call) and, for an actuator put into its safe state, who stopped it, when and why. Subclasses put their body in
+ * with {@link #setBody}. Swing thread only.
  */
 public abstract class ModulePanel extends JPanel {
 
@@ -22,6 +23,7 @@ public abstract class ModulePanel extends JPanel {
     private final String moduleName;
     private final FreshnessLabel freshness = new FreshnessLabel();
     private final JLabel problem = new JLabel(" ");
+    private final JLabel stop = new JLabel();
 
     protected ModulePanel(String moduleClass, String moduleName) {
         super(new BorderLayout(4, 4));
@@ -31,9 +33,13 @@ public abstract class ModulePanel extends JPanel {
         setBorder(BorderFactory.createCompoundBorder(BorderFactory.createTitledBorder(moduleClass + ": " + moduleName),
                 BorderFactory.createEmptyBorder(2, 6, 4, 6)));
         problem.setForeground(PROBLEM);
+        stop.setForeground(PROBLEM);
+        stop.setName("stop");
+        stop.setVisible(false);
         JPanel status = new JPanel(new GridLayout(0, 1));
         status.add(freshness);
         status.add(problem);
+        status.add(stop);
         add(status, BorderLayout.SOUTH);
         getAccessibleContext().setAccessibleName(moduleClass + " " + moduleName);
     }
@@ -63,6 +69,30 @@ public abstract class ModulePanel extends JPanel {
     public void clearProblem() {
         problem.setText(" ");
         problem.setToolTipText(null);
+    }
+
+    /** Shows that the module was put into its safe state, and why, until it is commanded again. */
+    public void showStopped(String text) {
+        stop.setText("STOPPED " + text);
+        stop.setToolTipText(stop.getText());
+        // the line is as wide as the panel, not as its text: the whole reason is in the tooltip
+        stop.setPreferredSize(new java.awt.Dimension(1, stop.getPreferredSize().height));
+        stop.setVisible(true);
+        revalidate();
+    }
+
+    /** The module was commanded again: the stop line goes. */
+    public void clearStopped() {
+        if (stop.isVisible()) {
+            stop.setVisible(false);
+            stop.setText("");
+            revalidate();
+        }
+    }
+
+    /** The stop line's text (empty when the module was not stopped since it was last commanded). */
+    public String stoppedText() {
+        return stop.isVisible() ? stop.getText() : "";
     }
 
     /** The problem line's text (blank when there is none). */

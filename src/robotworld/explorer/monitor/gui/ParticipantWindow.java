@@ -42,6 +42,15 @@ public class ParticipantWindow extends JFrame {
         pack();
     }
 
+    /**
+     * Shows a bar at the top of the window, outside the scrolled panels, so it is always visible: the STOP button
+     * of the world.
+     */
+    public void showAtTop(JComponent bar) {
+        getContentPane().add(bar, BorderLayout.NORTH);
+        pack();
+    }
+
     /** The window title for a participant. */
     public static String title(String world, String participant, String kind) {
         return "Monitor: " + participant + " (" + kind + ") - " + world;

@@ -6,6 +6,7 @@ import javax.swing.SwingUtilities;
 import robotworld.explorer.monitor.Monitor;
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.ModulePanel;
+import robotworld.safety.StopRecord;
 import robotworld.space.Capi;
 import robotworld.xvsm.CallTuple;
 
@@ -56,6 +57,23 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
      */
     protected abstract void show(CallTuple answer, P panel);
 
+    /**
+     * Shows the module's safe state after a successful stop: the default shows nothing more than the stop line;
+     * the motor monitor shows every motor at 0. Swing thread.
+     */
+    protected void showSafeState(StopRecord record, P panel) {
+    }
+
+    @Override
+    public void stopped(StopRecord record) {
+        SwingUtilities.invokeLater(() -> {
+            panel.showStopped(record.summary().replaceFirst("^stopped ", ""));
+            if (!record.action().startsWith("failed")) {
+                showSafeState(record, panel);
+            }
+        });
+    }
+
     /** The module watched. */
     public MonitoredModule module() {
         return module;
@@ -90,6 +108,9 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
         try {
             show(answer, panel);
             panel.clearProblem();
+            if (when != null) {
+                panel.clearStopped();
+            }
         } catch (RuntimeException e) {
             panel.showProblem("unreadable answer " + answer + ": " + e.getMessage());
         }

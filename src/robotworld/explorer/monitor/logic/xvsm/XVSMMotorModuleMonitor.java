@@ -2,6 +2,8 @@ package robotworld.explorer.monitor.logic.xvsm;
 
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.MotorModulePanel;
+import robotworld.core.MotorModule;
+import robotworld.safety.StopRecord;
 import robotworld.space.Capi;
 import robotworld.xvsm.CallTuple;
 
@@ -16,5 +18,13 @@ public class XVSMMotorModuleMonitor extends XVSMMonitor<MotorModulePanel> {
     protected void show(CallTuple answer, MotorModulePanel panel) {
         answer.expectFields(2);
         panel.showSpeed(answer.intAt(0), answer.intAt(1), answer.functionText());
+    }
+
+    /** A stopped motor module has every motor at 0. */
+    @Override
+    protected void showSafeState(StopRecord record, MotorModulePanel panel) {
+        for (int motor = 1; motor <= MotorModule.MOTORS; motor++) {
+            panel.showSpeed(motor, 0, record.cause().wireName());
+        }
     }
 }

@@ -1,0 +1,178 @@
+package robotworld.bus;
+
+import java.time.Duration;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicLongArray;
+import java.util.concurrent.locks.LockSupport;
+import java.util.function.Consumer;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Arms the communication watchdogs of modules on one bus and keeps them fed while the program lives. A module's
+ * watchdog (see {@code docs/bus.md}) is a holding register, {@link #TIMEOUT_REGISTER}, with a timeout in ms
+ * (0 = off); a module that hears no valid frame addressed to it for that long goes to its safe state by itself
+ * (a motor module stops its motors) and sets discrete input {@link #TRIPPED_INPUT} until the timeout register is
+ * written again. So when the program dies hard (SIGKILL, a crash, a pulled cable), its modules stop anyway.
+ *
+ * <p>Every exchange with a module feeds its watchdog, so a busy bus costs nothing extra. A module that has not
+ * been spoken to for a third of its timeout gets a heartbeat: a read of its tripped input (one request of 8
+ * bytes, one reply of 6), which also tells whether it tripped meanwhile (the program was frozen too long); then
+ * the listener is told and the watchdog armed again. One daemon thread per bus, started with the first armed
+ * module and ended by {@link RS485Bus#close()}.
+ */
+public final class BusWatchdog implements AutoCloseable {
+
+    /** Holding register: the watchdog timeout in ms, 0 = off. */
+    public static final int TIMEOUT_REGISTER = 0x0100;
+    /** Discrete input: 1 = the watchdog tripped and the module went to its safe state. */
+    public static final int TRIPPED_INPUT = 0x0100;
+
+    private static final Logger LOG = LoggerFactory.getLogger(BusWatchdog.class);
+    private static final long LONGEST_TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
+    private static final long SHORTEST_TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
+
+    private record Armed(int address, int millis, Consumer<String> onTrip) {
+    }
+
+    private final RS485Bus bus;
+    private final AtomicLongArray lastExchange = new AtomicLongArray(248);
+    private final Map<Integer, Armed> armed = new ConcurrentHashMap<>();
+    private final AtomicLong heartbeats = new AtomicLong();
+    private final AtomicLong failedHeartbeats = new AtomicLong();
+    private Thread feeder;
+    private volatile boolean closed;
+
+    BusWatchdog(RS485Bus bus) {
+        this.bus = bus;
+    }
+
+    /** A module answered (or refused) a request: its watchdog was fed. Called for every exchange. */
+    void exchanged(int address) {
+        lastExchange.set(address, System.nanoTime());
+    }
+
+    /**
+     * Arms the watchdog of the module at {@code address}. If it had tripped before (its previous master went
+     * silent), {@code onTrip} hears of that first.
+     *
+     * @param timeout 10..65535 ms
+     * @param onTrip  told, with a sentence, whenever the module's watchdog is found tripped
+     * @return false when the module has no watchdog (it refuses the register); it is then logged once
+     * @throws BusException when the module does not answer
+     */
+    public boolean arm(int address, Duration timeout, Consumer<String> onTrip) {
+        Objects.requireNonNull(onTrip, "onTrip");
+        long millis = timeout.toMillis();
+        if (millis < 10 || millis > 65_535) {
+            throw new IllegalArgumentException("a watchdog timeout is 10..65535 ms, was " + millis);
+        }
+        boolean trippedBefore;
+        try {
+            trippedBefore = bus.readDiscreteInputs(address, TRIPPED_INPUT, 1)[0];
+            bus.writeRegister(address, TIMEOUT_REGISTER, (int) millis);
+        } catch (ModuleRefusedException refused) {
+            LOG.warn("{} on {} has no communication watchdog ({}): it will not stop by itself if this program dies",
+                    bus.describe(address), bus.portName(), refused.getMessage());
+            return false;
+        }
+        if (trippedBefore) {
+            onTrip.accept("its communication watchdog had tripped before this program armed it (its previous "
+                    + "master went silent)");
+        }
+        armed.put(address, new Armed(address, (int) millis, onTrip));
+        startFeeder();
+        return true;
+    }
+
+    /** Stops feeding the module's watchdog; it stays armed in the module, which stops when the timeout runs out. */
+    public void release(int address) {
+        armed.remove(address);
+    }
+
+    /** The timeout the watchdog of {@code address} was armed with, in ms; 0 when not armed by this program. */
+    public int armedMillis(int address) {
+        Armed entry = armed.get(address);
+        return entry == null ? 0 : entry.millis();
+    }
+
+    /** Heartbeats sent so far (exchanges made only to feed a watchdog). */
+    public long heartbeats() {
+        return heartbeats.get();
+    }
+
+    /** Heartbeats that failed (no reply). */
+    public long failedHeartbeats() {
+        return failedHeartbeats.get();
+    }
+
+    /** Ends the feeding thread. The modules' watchdogs stay armed: they stop the modules when their time runs out. */
+    @Override
+    public void close() {
+        Thread thread;
+        synchronized (this) {
+            closed = true;
+            thread = feeder;
+        }
+        if (thread != null && thread != Thread.currentThread()) {
+            thread.interrupt();
+            try {
+                thread.join(2_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    private synchronized void startFeeder() {
+        if (feeder != null || closed) {
+            return;
+        }
+        feeder = new Thread(this::feed, "bus-watchdog " + bus.portName());
+        feeder.setDaemon(true);
+        feeder.start();
+    }
+
+    private void feed() {
+        while (!closed) {
+            long tick = LONGEST_TICK_NANOS;
+            for (Armed entry : armed.values()) {
+                tick = Math.min(tick, TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 10);
+            }
+            LockSupport.parkNanos(Math.max(SHORTEST_TICK_NANOS, tick));
+            if (closed || Thread.currentThread().isInterrupted()) {
+                return;
+            }
+            for (Armed entry : armed.values()) {
+                long idle = System.nanoTime() - lastExchange.get(entry.address());
+                if (idle >= TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 3) {
+                    heartbeat(entry);
+                }
+            }
+        }
+    }
+
+    private void heartbeat(Armed entry) {
+        try {
+            boolean tripped = bus.readDiscreteInputs(entry.address(), TRIPPED_INPUT, 1)[0];
+            heartbeats.incrementAndGet();
+            if (tripped) {
+                entry.onTrip().accept("its communication watchdog tripped: no frame from this program for over "
+                        + entry.millis() + " ms");
+                bus.writeRegister(entry.address(), TIMEOUT_REGISTER, entry.millis());
+            }
+        } catch (RuntimeException e) { // the feeder must not die: the modules would stop
+            if (closed) {
+                return;
+            }
+            if (failedHeartbeats.incrementAndGet() % 100 == 1) {
+                LOG.warn("watchdog heartbeat to {} on {} failed ({} so far): {}", bus.describe(entry.address()),
+                        bus.portName(), failedHeartbeats.get(), e.toString());
+            }
+        }
+    }
+}

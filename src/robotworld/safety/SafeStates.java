@@ -1,0 +1,82 @@
+package robotworld.safety;
+
+import java.time.Duration;
+import java.util.function.Consumer;
+import robotworld.bus.ModuleProxy;
+import robotworld.bus.MotorModuleProxy;
+import robotworld.core.MotorModule;
+
+/**
+ * The safe states of the built-in module types, as actions on their hardware, for the actuators' proxies to
+ * use. What each does is documented on the module's page in {@code docs/modules/}.
+ */
+public final class SafeStates {
+
+    /** What stopping a servo module does: nothing is sent, every servo keeps its target. */
+    public static final String SERVOS_HOLD = "servos hold their positions (no new target)";
+
+    private SafeStates() {
+    }
+
+    /**
+     * Sets every motor of a motor module to 0. On the bus this is one frame (write multiple registers 0x10 over
+     * holding registers 0..7), so all motors stop at the same moment.
+     *
+     * @return {@code motors 1-8 set to 0}
+     * @throws RuntimeException what the hardware throws
+     */
+    public static String stopMotors(MotorModule motors) {
+        if (motors instanceof MotorModuleProxy proxy) {
+            proxy.bus().writeRegisters(proxy.address(), 0, new int[MotorModule.MOTORS]);
+        } else {
+            for (int motor = 1; motor <= MotorModule.MOTORS; motor++) {
+                motors.setMotor(motor, 0);
+            }
+        }
+        return "motors 1-" + MotorModule.MOTORS + " set to 0";
+    }
+
+    /**
+     * Arms the communication watchdog of a module on the robot bus ({@code RS485Bus#armWatchdog}); does nothing for
+     * hardware that is not a bus module proxy, or when {@code millis} is 0.
+     *
+     * @param onTrip told whenever the module is found to have tripped
+     * @return whether the watchdog is armed
+     */
+    public static boolean armWatchdog(Object hardware, int millis, Consumer<String> onTrip) {
+        if (millis <= 0 || !(hardware instanceof ModuleProxy proxy)) {
+            return false;
+        }
+        return proxy.bus().armWatchdog(proxy.address(), Duration.ofMillis(millis), onTrip);
+    }
+
+    /** Stops feeding the watchdog of a bus module proxy armed with {@link #armWatchdog}. */
+    public static void releaseWatchdog(Object hardware) {
+        if (hardware instanceof ModuleProxy proxy) {
+            proxy.bus().watchdog().release(proxy.address());
+        }
+    }
+
+    /**
+     * Puts an X10 module into its configured safe state.
+     *
+     * @param on  switches it on
+     * @param off switches it off
+     * @return what was done
+     */
+    public static String x10(X10SafeState state, Runnable on, Runnable off) {
+        switch (state) {
+            case OFF -> {
+                off.run();
+                return "switched off";
+            }
+            case ON -> {
+                on.run();
+                return "switched on";
+            }
+            default -> {
+                return "left as it is (X10 safe state: unchanged)";
+            }
+        }
+    }
+}

@@ -1,0 +1,132 @@
+package robotworld.safety;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static robotworld.safety.SafetyRig.eventually;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robotworld.bus.BusTiming;
+import robotworld.bus.BusWatchdog;
+import robotworld.bus.MotorModuleProxy;
+import robotworld.bus.RS485Bus;
+import robotworld.bus.SerialSettings;
+import robotworld.sim.robot.SimModule;
+import robotworld.xvsm.ActuatorStoppedException;
+import robotworld.xvsm.XVSMMotorModuleLocal;
+import robotworld.xvsm.XVSMRuntime;
+
+/**
+ * Rule 2: the program that serves a motor module arms the module's communication watchdog and keeps it fed; when
+ * the program dies hard (SIGKILL) the module stops by itself; a trip the program lives to see is recorded, and
+ * its commanders are told.
+ */
+class BusWatchdogTest {
+
+    @TempDir
+    Path temp;
+
+    private SafetyRig rig;
+
+    @BeforeEach
+    void startRig() throws Exception {
+        rig = SafetyRig.start();
+    }
+
+    @AfterEach
+    void stopRig() {
+        rig.close();
+    }
+
+    @Test
+    void aMotorModuleIsArmedWithTheDefaultAndKeptFedWhileTheProgramLives() throws Exception {
+        try (XVSMRuntime runtime = XVSMRuntime.connect(rig.spaceUrl, "robot-pc")) {
+            RS485Bus bus = runtime.own(bus());
+            XVSMMotorModuleLocal motor = runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT,
+                    SafetyRig.MOTOR, new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
+            SimModule module = rig.robot.module(1);
+            assertEquals(SafetySettings.DEFAULT_MOTOR_WATCHDOG_MILLIS, module.watchdogMillis());
+            assertEquals(SafetySettings.DEFAULT_MOTOR_WATCHDOG_MILLIS, bus.watchdog().armedMillis(1));
+            motor.setMotor(1, 0.3);
+            // idle for several timeouts: only the watchdog's heartbeats talk to the module
+            eventually("heartbeats", () -> bus.watchdog().heartbeats() >= 6);
+            assertFalse(module.watchdogTripped(), "fed by heartbeats");
+            assertEquals(300, rig.motorSpeed(1));
+        }
+    }
+
+    @Test
+    void aModuleWithoutAWatchdogIsServedAnyway() throws Exception {
+        try (XVSMRuntime runtime = XVSMRuntime.connect(rig.spaceUrl, "robot-pc")) {
+            RS485Bus bus = runtime.own(bus());
+            rig.robot.faults(1).refuseWith(2); // a module that knows no register 0x0100 (nor any other)
+            runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.MOTOR,
+                    new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
+            assertEquals(0, bus.watchdog().armedMillis(1), "not armed, logged");
+            rig.robot.faults(1).refuseWith(0);
+        }
+    }
+
+    @Test
+    void aProgramKilledWithSigkillLeavesItsMotorsToTheWatchdog() throws Exception {
+        try (ChildProgram child = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+                rig.spaceUrl, rig.busPort)) {
+            child.awaitLine("READY", Duration.ofSeconds(60));
+            assertEquals(450, rig.motorSpeed(1));
+            child.kill();
+            child.awaitExit(Duration.ofSeconds(30));
+            eventually("the module stops by itself", rig::motorsStopped);
+            assertTrue(rig.robot.module(1).watchdogTripped());
+        }
+    }
+
+    @Test
+    void aTripTheProgramLivesToSeeIsRecordedAndItsCommandersAreTold() throws Exception {
+        try (XVSMRuntime runtime = XVSMRuntime.connect(rig.spaceUrl, "robot-pc")) {
+            RS485Bus bus = runtime.own(bus());
+            runtime.safety().describe(SafetyRig.ROBOT, SafetyRig.MOTOR, new ModuleSafety(null, 100, null));
+            XVSMMotorModuleLocal motor = runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT,
+                    SafetyRig.MOTOR, new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
+            assertEquals(100, rig.robot.module(1).watchdogMillis());
+            motor.setMotor(1, 0.3);
+            // the line to the module breaks for a while (as if this program froze): it hears nothing, stops
+            rig.robot.faults(1).silent(true);
+            eventually("tripped", () -> rig.robot.module(1).watchdogTripped());
+            assertEquals(0, rig.motorSpeed(1));
+            rig.robot.faults(1).silent(false);
+            eventually("the program hears of the trip", () -> runtime.safety().recentStops().stream()
+                    .anyMatch(stop -> stop.cause() == StopCause.WATCHDOG));
+            eventually("armed again", () -> !rig.robot.module(1).watchdogTripped());
+            StopRecord stop = runtime.safety().recentStops().stream()
+                    .filter(s -> s.cause() == StopCause.WATCHDOG).findFirst().orElseThrow();
+            assertTrue(stop.reason().contains("watchdog tripped"), stop.toString());
+            ActuatorStoppedException told = assertThrows(ActuatorStoppedException.class,
+                    () -> motor.setMotor(1, 0.3));
+            assertTrue(told.getMessage().contains("watchdog"), told.getMessage());
+            motor.setMotor(1, 0.3);
+            assertEquals(300, rig.motorSpeed(1), "commanded again, it moves");
+        }
+    }
+
+    @Test
+    void theRegisterMapIsTheDocumentedOne() throws Exception {
+        try (RS485Bus bus = bus()) {
+            bus.writeRegister(1, BusWatchdog.TIMEOUT_REGISTER, 1234);
+            assertEquals(1234, bus.readHoldingRegisters(1, 0x0100, 1)[0]);
+            assertFalse(bus.readDiscreteInputs(1, 0x0100, 1)[0]);
+            bus.writeRegister(1, BusWatchdog.TIMEOUT_REGISTER, 0);
+        }
+    }
+
+    private RS485Bus bus() throws Exception {
+        return new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
+                BusTiming.defaults().withFrameGap(Duration.ZERO));
+    }
+}
