@@ -3,6 +3,8 @@ package robotworld.bus;
 import java.io.Closeable;
 import java.io.IOException;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
@@ -23,6 +25,9 @@ import robotworld.bus.modbus.ServerIdReport;
  * bus. Failures are unchecked {@link BusException}s naming the module, its address and the port.
  */
 public final class RS485Bus implements Closeable {
+
+    /** How many transactions a split identification may take (one per object at most, 3 basic objects). */
+    private static final int MAX_IDENTIFICATION_PARTS = 8;
 
     /** The line speed used when none is given. */
     public static final int DEFAULT_BAUD = 115_200;
@@ -82,10 +87,12 @@ public final class RS485Bus implements Closeable {
 
     // ----- the mandatory commands of every module -----
 
-    /** Identification: Read Device Identification (0x2B/0x0E), basic objects. */
+    /**
+     * Identification: Read Device Identification (0x2B/0x0E), basic objects; a device that splits them over
+     * several transactions ("more follows") is asked until it has sent them all.
+     */
     public DeviceIdentification identify(int address) {
-        return decode(address, "identification", () -> DeviceIdentification.decode(call(address,
-                Pdus.readDeviceIdentification())));
+        return followIdentification(address, call(address, Pdus.readDeviceIdentification()));
     }
 
     /** Status: Report Server ID (0x11); a module that is OK reports run indicator 0xFF. */
@@ -94,12 +101,13 @@ public final class RS485Bus implements Closeable {
     }
 
     /**
-     * Echo: Diagnostics 0x08 sub-function 0x0000; the module must return {@code word} unaltered.
+     * Echo: Diagnostics 0x08 sub-function 0x0000; the module must return the {@code words} (one or more)
+     * unaltered.
      *
      * @throws BusProtocolException when the echo comes back altered
      */
-    public void echo(int address, int word) {
-        byte[] request = Pdus.echo(word);
+    public void echo(int address, int... words) {
+        byte[] request = Pdus.echo(words);
         byte[] response = call(address, request);
         decode(address, "echo", () -> {
             Pdus.checkEcho(request, response);
@@ -169,7 +177,29 @@ public final class RS485Bus implements Closeable {
         byte[] request = Pdus.readDeviceIdentification();
         byte[] response = master.call(checkAddress(address), request,
                 new RtuMaster.CallPolicy(scanReplyTimeout(), timing.attempts(), false));
-        return decode(address, "identification", () -> DeviceIdentification.decode(response));
+        return followIdentification(address, response); // the module answered: further parts at normal timing
+    }
+
+    /** Asks for the rest of a split identification, each part from where the previous one said to go on. */
+    private DeviceIdentification followIdentification(int address, byte[] firstResponse) {
+        List<DeviceIdentification.Part> parts = new ArrayList<>();
+        DeviceIdentification.Part part = decode(address, "identification",
+                () -> DeviceIdentification.decodePart(firstResponse));
+        parts.add(part);
+        int startedAt = 0;
+        while (part.moreFollows()) {
+            int next = part.nextObjectId();
+            if (next <= startedAt || parts.size() >= MAX_IDENTIFICATION_PARTS) {
+                throw new BusProtocolException(link.portName(), address, describe(address) + " on "
+                        + link.portName() + ": malformed identification: 'more follows' does not progress (next "
+                        + "object " + next + " after a part that started at " + startedAt + ")");
+            }
+            startedAt = next;
+            byte[] response = call(address, Pdus.readDeviceIdentification(next));
+            part = decode(address, "identification", () -> DeviceIdentification.decodePart(response));
+            parts.add(part);
+        }
+        return DeviceIdentification.of(parts);
     }
 
     /**

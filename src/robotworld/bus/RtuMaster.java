@@ -51,11 +51,16 @@ final class RtuMaster {
     record CallPolicy(Duration replyTimeout, int attempts, boolean retryTimeouts) {
     }
 
-    private enum Kind { OK, TIMEOUT, CORRUPT, WRONG_FUNCTION, REFUSED }
+    private enum Kind { OK, TIMEOUT, CORRUPT, WRONG_FUNCTION, REFUSED, WRONG_ADDRESS }
 
-    private record Reply(Kind kind, byte[] pdu) {
-        static final Reply TIMEOUT = new Reply(Kind.TIMEOUT, null);
-        static final Reply CORRUPT = new Reply(Kind.CORRUPT, null);
+    /** What came back; {@code from} is the address the frame named. */
+    private record Reply(Kind kind, byte[] pdu, int from) {
+        static final Reply TIMEOUT = new Reply(Kind.TIMEOUT, null, -1);
+        static final Reply CORRUPT = new Reply(Kind.CORRUPT, null, -1);
+
+        Reply(Kind kind, byte[] pdu) {
+            this(kind, pdu, -1);
+        }
     }
 
     private record Pending(int address, byte[] pdu, long sent, long deadline) {
@@ -83,6 +88,8 @@ final class RtuMaster {
     private long lineQuietSince = System.nanoTime();
     private Pending pending;
     private boolean linkBroken;
+    /** During a call: a frame from an address that owes nothing, answering our request (see readReply). */
+    private RtuFrame suspect;
 
     /**
      * @param describe names an address for messages, e.g. "BumperModule 'Bumper-Sensor' at address 2"
@@ -132,7 +139,7 @@ final class RtuMaster {
                 }
                 long sent = send(address, frame);
                 // a late reply to an earlier attempt of this call answers the same request: it is accepted
-                Reply reply = readReply(address, pdu, length, sent + policy.replyTimeout().toNanos());
+                Reply reply = readReply(address, pdu, length, sent + policy.replyTimeout().toNanos(), true);
                 if (reply.kind() == Kind.OK) {
                     return reply.pdu();
                 }
@@ -212,6 +219,30 @@ final class RtuMaster {
     }
 
     private Reply readReply(int address, byte[] request, FrameLength length, long deadline) {
+        return readReply(address, request, length, deadline, false);
+    }
+
+    /**
+     * Reads until the reply from {@code address} or the deadline. Valid frames from other addresses are stray
+     * frames (late replies), except, when {@code answersRequest}, a frame that answers this very request from an
+     * address that owes nothing, followed by silence from {@code address}: that is a module answering under the
+     * wrong address, reported as such instead of a timeout here and a phantom module there.
+     */
+    private Reply readReply(int address, byte[] request, FrameLength length, long deadline, boolean answersRequest) {
+        suspect = null;
+        Reply reply = readFrames(address, request, length, deadline, answersRequest);
+        RtuFrame misaddressed = suspect;
+        suspect = null;
+        if (misaddressed != null) {
+            if (reply.kind() == Kind.TIMEOUT) {
+                return new Reply(Kind.WRONG_ADDRESS, misaddressed.pdu(), misaddressed.address());
+            }
+            stray(misaddressed); // the right module answered too: the other frame was a late reply after all
+        }
+        return reply;
+    }
+
+    private Reply readFrames(int address, byte[] request, FrameLength length, long deadline, boolean answersRequest) {
         int have = 0;
         try {
             while (true) {
@@ -245,6 +276,10 @@ final class RtuMaster {
                 have -= frameLength;
                 System.arraycopy(buffer, frameLength, buffer, 0, have);
                 if (frame.address() != address) {
+                    if (answersRequest && suspect == null && answersUnowed(frame, request)) {
+                        suspect = frame; // decided when our own reply comes or does not
+                        continue;
+                    }
                     stray(frame);
                     continue;
                 }
@@ -256,6 +291,16 @@ final class RtuMaster {
         } catch (IOException e) {
             throw linkFailure(address, e);
         }
+    }
+
+    /** Whether {@code frame} looks like the answer to {@code request} from an address that owes no reply. */
+    private boolean answersUnowed(RtuFrame frame, byte[] request) {
+        int requested = request[0] & 0xFF;
+        int function = frame.functionCode();
+        boolean sameFunction = function == requested || function == (requested | FunctionCodes.EXCEPTION_BIT);
+        boolean owes = frame.address() < owed.length && owed[frame.address()] > 0
+                || pending != null && pending.address() == frame.address();
+        return sameFunction && frame.address() != 0 && !owes;
     }
 
     private Reply classify(int address, byte[] request, byte[] response) {
@@ -411,6 +456,9 @@ final class RtuMaster {
                     + " within " + millis(policy.replyTimeout()) + " (" + tries + ")");
             case CORRUPT -> new BusCrcException(link.portName(), address, who + ": corrupted reply (CRC error) to "
                     + function + " (" + tries + ")");
+            case WRONG_ADDRESS -> new BusProtocolException(link.portName(), address, who + ": the reply to "
+                    + function + " came from address " + last.from() + " (" + tries + "): a module listens at address "
+                    + address + " but answers as address " + last.from() + "; check its address setting");
             default -> new BusProtocolException(link.portName(), address, who + ": unexpected reply to " + function
                     + ": " + RtuFrame.hex(last.pdu(), last.pdu().length) + " (" + tries + ")");
         };

@@ -273,4 +273,70 @@ class RtuMasterTest {
         assertTrue(again < 300, "no wait for a reply already heard: asked again after " + again + " ms");
         assertEquals(0, master.statistics().staleReplies());
     }
+
+    @Test
+    void aModuleAnsweringUnderAnotherAddressIsNamedNotLeftAsAPhantom() {
+        ScriptedBusLink link = new ScriptedBusLink(request -> request[0] == 5 ? List.of(frame(6, BUMPERS_REPLY))
+                : List.of());
+        RtuMaster master = master(link);
+        BusProtocolException e = assertThrows(BusProtocolException.class, () -> master.call(5, READ_BUMPERS, POLICY));
+        assertEquals(5, e.address());
+        assertTrue(e.getMessage().contains("came from address 6"), e.getMessage());
+        assertTrue(e.getMessage().contains("listens at address 5 but answers as address 6"), e.getMessage());
+        assertEquals(List.of(), strays, "address 6 is not reported as a module that answered late");
+    }
+
+    @Test
+    void aLateReplyFromAnotherAddressBeforeOursIsStillAStray() {
+        // the frame from 9 owes nothing (its request is long forgotten), but address 2 answers: 9 was just late
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(frame(9, BUMPERS_REPLY),
+                frame(request[0], BUMPERS_REPLY)));
+        RtuMaster master = master(link);
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(List.of(9), strays.stream().map(RtuFrame::address).toList());
+    }
+
+    @Test
+    void anEchoOfSeveralWordsComesBackWhole() throws Exception {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(request));
+        try (RS485Bus bus = new RS485Bus(link, SerialSettings.eightNoneOne(115_200),
+                BusTiming.defaults().withFrameGap(Duration.ZERO))) {
+            bus.echo(3, 0x0102, 0x0304, 0x0506, 0x0708);
+            assertEquals(Pdus.echo(0x0102, 0x0304, 0x0506, 0x0708).length + 3, link.written().get(0).length);
+        }
+    }
+
+    @Test
+    void aSplitIdentificationIsFollowedToItsEnd() throws Exception {
+        HexFormat hex = HexFormat.of();
+        ScriptedBusLink link = new ScriptedBusLink(request -> {
+            int from = request[4] & 0xFF; // address 2B 0E 01 objectId
+            String pdu = switch (from) {
+                case 0 -> "2B0E0101FF0101000441434D45"; // VendorName "ACME"; more follows, at object 1
+                case 1 -> "2B0E0101FF0201010731354236334232"; // ProductCode "15B63B2"; more follows, at 2
+                default -> "2B0E01010000010203312E30"; // MajorMinorRevision "1.0"; done
+            };
+            return List.of(frame(request[0], hex.parseHex(pdu)));
+        });
+        try (RS485Bus bus = new RS485Bus(link, SerialSettings.eightNoneOne(115_200),
+                BusTiming.defaults().withFrameGap(Duration.ZERO))) {
+            robotworld.bus.modbus.DeviceIdentification id = bus.identify(4);
+            assertEquals("ACME", id.vendorName());
+            assertEquals("15B63B2", id.productCode());
+            assertEquals("1.0", id.revision());
+            assertEquals(3, link.written().size());
+            assertEquals(List.of(0, 1, 2), link.written().stream().map(w -> w[4] & 0xFF).toList());
+        }
+    }
+
+    @Test
+    void aSplitIdentificationThatDoesNotProgressIsAProtocolError() throws Exception {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(frame(request[0],
+                HexFormat.of().parseHex("2B0E0101FF0001000141"))));
+        try (RS485Bus bus = new RS485Bus(link, SerialSettings.eightNoneOne(115_200),
+                BusTiming.defaults().withFrameGap(Duration.ZERO))) {
+            BusProtocolException e = assertThrows(BusProtocolException.class, () -> bus.identify(4));
+            assertTrue(e.getMessage().contains("does not progress"), e.getMessage());
+        }
+    }
 }

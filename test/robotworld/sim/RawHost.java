@@ -32,6 +32,23 @@ final class RawHost implements AutoCloseable {
         return this;
     }
 
+    /**
+     * As {@link #expect}, after any number of {@code poll} bytes: a polling interface may poll once more before it
+     * takes what the host sent (a poll interval can pass on a busy machine).
+     */
+    RawHost expectAfterPolls(String poll, String hex) throws IOException {
+        byte[] first = read(1);
+        while (first.length == 1 && Hex.of(first).equalsIgnoreCase(poll) && !poll.equalsIgnoreCase(hex)) {
+            first = read(1);
+        }
+        byte[] rest = read(bytes(hex).length - 1);
+        byte[] got = new byte[first.length + rest.length];
+        System.arraycopy(first, 0, got, 0, first.length);
+        System.arraycopy(rest, 0, got, first.length, rest.length);
+        assertEquals(hex.toUpperCase(), Hex.of(got), "bytes from the interface");
+        return this;
+    }
+
     byte[] read(int length) throws IOException {
         byte[] got = new byte[length];
         int filled = 0;

@@ -106,7 +106,7 @@ class SimulatedCm11aTest {
             host.expect("A5");                     // the next poll
             CM11aClock clock = CM11aClock.of(LocalDateTime.of(2009, 3, 3, 13, 45, 30), HouseCode.B);
             host.link.write(clock.frame());
-            host.expect(Hex.of(clock.checksum())).send("00").expect("55");
+            host.expectAfterPolls("A5", Hex.of(clock.checksum())).send("00").expect("55");
             host.send("04 62").expect("66").send("00").expect("55");
         }
         assertFalse(sim.isPowerFailed());

@@ -37,14 +37,56 @@ public record DeviceIdentification(Map<Integer, String> objects) {
     }
 
     /**
-     * Decodes a response PDU: {@code 2B 0E code conformity more next count (id len value)*}.
+     * One transaction's share of the identification: a device whose objects do not fit one response sends
+     * "more follows" (0xFF) and the object id to ask for next.
+     *
+     * @param objects the objects of this response, by object id
+     * @param moreFollows whether more objects are to be asked for
+     * @param nextObjectId where the next request starts (meaningful when more follows)
+     */
+    public record Part(Map<Integer, String> objects, boolean moreFollows, int nextObjectId) {
+        public Part {
+            objects = Collections.unmodifiableMap(new TreeMap<>(objects));
+        }
+    }
+
+    /** The identification made of several parts, in the order they came (a later object id replaces nothing). */
+    public static DeviceIdentification of(Iterable<Part> parts) {
+        Map<Integer, String> objects = new TreeMap<>();
+        for (Part part : parts) {
+            part.objects().forEach(objects::putIfAbsent);
+        }
+        return new DeviceIdentification(objects);
+    }
+
+    /**
+     * Decodes a complete response PDU (one that does not announce more objects).
+     *
+     * @throws MalformedPduException when the layout is broken or more objects follow
+     */
+    public static DeviceIdentification decode(byte[] pdu) {
+        Part part = decodePart(pdu);
+        if (part.moreFollows()) {
+            throw new MalformedPduException("device identification continues at object " + part.nextObjectId()
+                    + " in another transaction");
+        }
+        return new DeviceIdentification(part.objects());
+    }
+
+    /**
+     * Decodes one response PDU: {@code 2B 0E code conformity more next count (id len value)*}.
      *
      * @throws MalformedPduException when the layout is broken
      */
-    public static DeviceIdentification decode(byte[] pdu) {
+    public static Part decodePart(byte[] pdu) {
         if (pdu.length < 7 || (pdu[0] & 0xFF) != FunctionCodes.ENCAPSULATED_INTERFACE
                 || (pdu[1] & 0xFF) != FunctionCodes.MEI_READ_DEVICE_ID) {
             throw new MalformedPduException("not a device identification response: " + RtuFrame.hex(pdu, pdu.length));
+        }
+        int more = pdu[4] & 0xFF;
+        if (more != 0x00 && more != 0xFF) {
+            throw new MalformedPduException(String.format("device identification 'more follows' is 0x%02X, neither "
+                    + "0x00 nor 0xFF", more));
         }
         int count = pdu[6] & 0xFF;
         Map<Integer, String> objects = new TreeMap<>();
@@ -66,6 +108,6 @@ public record DeviceIdentification(Map<Integer, String> objects) {
             throw new MalformedPduException("device identification has " + (pdu.length - position)
                     + " bytes after its last object");
         }
-        return new DeviceIdentification(objects);
+        return new Part(objects, more == 0xFF, pdu[5] & 0xFF);
     }
 }

@@ -35,7 +35,7 @@ public final class FrameLengths {
         return switch (function) {
             case 0x01, 0x02, 0x03, 0x04, 0x05, 0x06 -> 8;
             case 0x0F, 0x10 -> have < 7 ? FrameLength.NEED_MORE : 9 + (b[6] & 0xFF);
-            case DIAGNOSTICS -> 8; // sub-function and one data word: the form every master sends
+            case DIAGNOSTICS -> diagnosticsRequestLength(b, have);
             case 0x07, 0x0B, 0x0C, REPORT_SERVER_ID -> OVERHEAD;
             case 0x16 -> 10;
             case 0x17 -> have < 11 ? FrameLength.NEED_MORE : 13 + (b[10] & 0xFF);
@@ -43,6 +43,26 @@ public final class FrameLengths {
                     : (b[2] & 0xFF) == MEI_READ_DEVICE_ID ? 7 : FrameLength.UNKNOWN;
             default -> FrameLength.UNKNOWN;
         };
+    }
+
+    /**
+     * Return Query Data (sub-function 0) may carry any number of data words, and nothing in the frame counts them:
+     * the frame is the shortest even-sized prefix whose CRC is right (a false match has odds of 1 in 65536 per
+     * candidate; a wrong guess fails the request's echo, never a write). Other sub-functions carry one word.
+     */
+    private static int diagnosticsRequestLength(byte[] b, int have) {
+        if (have < 4) {
+            return FrameLength.NEED_MORE;
+        }
+        if (((b[2] & 0xFF) << 8 | b[3] & 0xFF) != FunctionCodes.DIAGNOSTICS_RETURN_QUERY_DATA) {
+            return 8;
+        }
+        for (int length = 6; length <= Math.min(have, RtuFrame.MAX_LENGTH); length += 2) {
+            if (Crc16.isValidFrame(b, length)) {
+                return length;
+            }
+        }
+        return have >= RtuFrame.MAX_LENGTH ? RtuFrame.MAX_LENGTH + 1 : FrameLength.NEED_MORE;
     }
 
     private static int responseLength(int requested, int requestLength, byte[] b, int have) {

@@ -11,8 +11,16 @@ public final class Pdus {
 
     /** Read Device Identification, basic objects (code 01) from object 0. */
     public static byte[] readDeviceIdentification() {
+        return readDeviceIdentification(0);
+    }
+
+    /** Read Device Identification, basic objects (code 01) from {@code objectId}: a follow-up after "more follows". */
+    public static byte[] readDeviceIdentification(int objectId) {
+        if (objectId < 0 || objectId > 0xFF) {
+            throw new IllegalArgumentException("object id " + objectId + " is outside 0..255");
+        }
         return new byte[] {(byte) FunctionCodes.ENCAPSULATED_INTERFACE, (byte) FunctionCodes.MEI_READ_DEVICE_ID, 0x01,
-                0x00};
+                (byte) objectId};
     }
 
     /** Report Server ID. */
@@ -20,10 +28,19 @@ public final class Pdus {
         return new byte[] {(byte) FunctionCodes.REPORT_SERVER_ID};
     }
 
-    /** Diagnostics, Return Query Data, with one data word. */
-    public static byte[] echo(int word) {
-        checkWord(word);
-        return new byte[] {(byte) FunctionCodes.DIAGNOSTICS, 0x00, 0x00, (byte) (word >>> 8), (byte) word};
+    /** Diagnostics, Return Query Data, with any number of data words (1..125). */
+    public static byte[] echo(int... words) {
+        if (words.length < 1 || words.length > 125) {
+            throw new IllegalArgumentException("echo 1..125 words, not " + words.length);
+        }
+        byte[] pdu = new byte[3 + 2 * words.length];
+        pdu[0] = (byte) FunctionCodes.DIAGNOSTICS;
+        for (int i = 0; i < words.length; i++) {
+            checkWord(words[i]);
+            pdu[3 + 2 * i] = (byte) (words[i] >>> 8);
+            pdu[4 + 2 * i] = (byte) words[i];
+        }
+        return pdu;
     }
 
     /** Read {@code count} discrete inputs from {@code first}. */

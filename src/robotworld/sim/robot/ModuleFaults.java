@@ -17,6 +17,7 @@ public final class ModuleFaults {
     private volatile Duration replyDelay = Duration.ZERO;
     private volatile int refuseWith;
     private volatile boolean stopped;
+    private volatile int answerAs;
     private final java.util.Set<Integer> muted = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     /** Faults whose random CRC errors follow {@code seed}, so a run can be repeated. */
@@ -67,6 +68,20 @@ public final class ModuleFaults {
     public ModuleFaults stopped(boolean value) {
         stopped = value;
         return this;
+    }
+
+    /** Names {@code address} instead of its own in every reply (a module set to the wrong address); 0 = its own. */
+    public ModuleFaults answerAs(int address) {
+        if (address < 0 || address > 247) {
+            throw new IllegalArgumentException("address must be 0 (its own) or 1..247, was " + address);
+        }
+        answerAs = address;
+        return this;
+    }
+
+    /** The address replies name instead of the module's own, or 0. */
+    public int answerAs() {
+        return answerAs;
     }
 
     /** Never answers requests with this function code (e.g. 0x11: identifies itself, then fails its status). */

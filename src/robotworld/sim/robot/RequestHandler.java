@@ -116,23 +116,31 @@ final class RequestHandler {
         return new byte[] {request[0], request[1], request[2], request[3], request[4]};
     }
 
+    /** Return Query Data: the request comes back unaltered, whatever number of data words it carries. */
     private static byte[] diagnostics(byte[] request) throws ModbusRefusal {
-        requireLength(request, 5);
+        if (request.length < 3 || (request.length - 3) % 2 != 0) {
+            throw new ModbusRefusal(ExceptionCodes.ILLEGAL_DATA_VALUE, "request of " + request.length + " bytes");
+        }
         if (word(request, 1) != FunctionCodes.DIAGNOSTICS_RETURN_QUERY_DATA) {
             throw new ModbusRefusal(ExceptionCodes.ILLEGAL_FUNCTION, "only Return Query Data is supported");
         }
         return request.clone();
     }
 
+    /**
+     * Server ID, then the run indicator as the last byte, no additional data: a client that takes the indicator
+     * from right after a one-byte ID (libmodbus) and one that takes it from the end (pymodbus) both read this
+     * layout right. The server ID is the address, or the configured ASCII ID of any length.
+     */
     private static byte[] reportServerId(SimModule module, byte[] request) throws ModbusRefusal {
         requireLength(request, 1);
-        byte[] product = ascii(module.identity().nodeId());
-        byte[] response = new byte[4 + product.length];
+        String configured = module.identity().serverId();
+        byte[] serverId = configured.isEmpty() ? new byte[] {(byte) module.address()} : ascii(configured);
+        byte[] response = new byte[3 + serverId.length];
         response[0] = (byte) FunctionCodes.REPORT_SERVER_ID;
-        response[1] = (byte) (2 + product.length);
-        response[2] = (byte) module.address();
-        response[3] = (byte) (module.faults().isStopped() ? 0x00 : 0xFF);
-        System.arraycopy(product, 0, response, 4, product.length);
+        response[1] = (byte) (serverId.length + 1);
+        System.arraycopy(serverId, 0, response, 2, serverId.length);
+        response[response.length - 1] = (byte) (module.faults().isStopped() ? 0x00 : 0xFF);
         return response;
     }
 

@@ -114,7 +114,8 @@ final class RtuServerSession implements Runnable {
         if (module == null || module.faults().ignores(request.functionCode())) {
             return;
         }
-        byte[] reply = new RtuFrame(request.address(), simulation.respond(module, request.pdu())).encode();
+        int replyAddress = module.faults().answerAs() != 0 ? module.faults().answerAs() : request.address();
+        byte[] reply = new RtuFrame(replyAddress, simulation.respond(module, request.pdu())).encode();
         if (module.faults().takeCorruption()) {
             reply[reply.length - 1] ^= (byte) 0xA5;
         }

@@ -32,7 +32,7 @@ public final class SimRobotConfigReader {
     public static final Map<String, String> DEFAULT_NODE_IDS = Map.of("Motor", "15B63A4", "Servo", "15B63A1",
             "Bumper", "15B63B2", "IRDistance", "15B63C7");
     private static final String DEFAULT_VENDOR = "RobotWorld reference modules";
-    private static final Set<String> COMMON = Set.of("address", "nodeId", "version", "vendor", "silent",
+    private static final Set<String> COMMON = Set.of("address", "nodeId", "version", "vendor", "serverId", "silent",
             "crcErrorRate", "replyDelay", "refuseWith", "stopped");
 
     private final String source;
@@ -179,7 +179,7 @@ public final class SimRobotConfigReader {
         Attributes a = new Attributes(element, where, allowed);
         int address = (int) a.integer("address", -1, 1, 247);
         ModuleIdentity identity = new ModuleIdentity(a.text("vendor", DEFAULT_VENDOR),
-                a.text("nodeId", DEFAULT_NODE_IDS.get(type)), a.text("version", "1.0"));
+                a.text("nodeId", DEFAULT_NODE_IDS.get(type)), a.text("version", "1.0"), a.text("serverId", ""));
         ModuleSpec.Common common = new ModuleSpec.Common(address, identity, a.bool("silent"),
                 a.number("crcErrorRate", 0, 0, 1), (int) a.integer("replyDelay", 0, 0, 60_000),
                 (int) a.integer("refuseWith", 0, 0, 255), a.bool("stopped"));

@@ -137,6 +137,38 @@ class RobotExplorerTest {
     }
 
     @Test
+    void aModuleAnsweringUnderAnotherAddressIsReportedWhereItListens() throws Exception {
+        robot.faults(3).answerAs(14);
+        ExplorationResult result = explorer().explore("Troubled", new ExplorationListener() { });
+        AddressProblem at3 = result.problems().stream().filter(p -> p.address() == 3).findFirst().orElseThrow();
+        assertEquals(AddressProblem.Kind.PROTOCOL_ERROR, at3.kind());
+        assertTrue(at3.message().contains("came from address 14"), at3.message());
+        assertTrue(result.problems().stream().noneMatch(p -> p.address() == 14), "no phantom at 14: "
+                + result.problems());
+    }
+
+    @Test
+    void aModuleWithAMultiByteServerIdIsExplored() throws Exception {
+        String config = """
+                <SimulatedRobot name="Ids">
+                  <World width="2000" height="1000"/>
+                  <Body x="500" y="500"/>
+                  <Bumper address="20" serverId="ACME bumper rev 7"/>
+                  <Motor address="21" serverId="M" stopped="true"/>
+                </SimulatedRobot>""";
+        try (SimulatedRobot ids = SimulatedRobot.create(SimRobotConfigReader.parse(config, "ids"));
+                RS485Bus idBus = new RS485Bus(ids.serve("tcp://127.0.0.1:0"), SerialSettings.eightNoneOne(115_200),
+                        BusTiming.defaults())) {
+            assertEquals("ACME bumper rev 7", idBus.reportServerId(20).serverIdText());
+            ExplorationResult result = new RobotExplorer(idBus, new ModuleCatalog(ProjectFiles.resolve(
+                    "ModuleDescriptions"))).addresses(19, 22).explore("Ids", new ExplorationListener() { });
+            assertEquals(List.of(20), result.modules().stream().map(FoundModule::address).toList());
+            assertEquals(List.of("address 21: NOT_RUNNING"), result.problems().stream()
+                    .map(p -> "address " + p.address() + ": " + p.kind()).toList());
+        }
+    }
+
+    @Test
     void noModuleMeansNoDescription() throws Exception {
         ExplorationResult result = new RobotExplorer(bus, new ModuleCatalog(ProjectFiles.resolve("ModuleDescriptions")))
                 .addresses(20, 30).explore("Empty", new ExplorationListener() { });

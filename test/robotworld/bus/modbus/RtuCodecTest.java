@@ -56,7 +56,7 @@ class RtuCodecTest {
         assertEquals(9 + 4, requests.of(hex("01 10 00 00 00 02 04"), 7));
         assertEquals(4, requests.of(hex("01 11"), 2));
         assertEquals(7, requests.of(hex("01 2B 0E"), 3));
-        assertEquals(8, requests.of(hex("01 08"), 2));
+        assertEquals(FrameLength.NEED_MORE, requests.of(hex("01 08"), 2), "diagnostics: see below");
         assertEquals(FrameLength.UNKNOWN, requests.of(hex("01 42"), 2));
     }
 
@@ -98,14 +98,67 @@ class RtuCodecTest {
     }
 
     @Test
-    void decodesServerIdReports() {
-        ServerIdReport report = ServerIdReport.decode(hex("11 04 07 FF 41 42"));
-        assertEquals(7, report.serverId());
+    void decodesServerIdReportsWithAOneByteIdAndAdditionalData() {
+        // libmodbus: ID, run indicator, then "LMB" and its version
+        ServerIdReport report = ServerIdReport.decode(hex("11 06 07 FF 4C 4D 42 33"));
+        assertArrayEquals(hex("07"), report.serverId());
         assertTrue(report.running());
-        assertArrayEquals(hex("41 42"), report.additionalData());
+        assertArrayEquals(hex("4C 4D 42 33"), report.additionalData());
         assertFalse(ServerIdReport.decode(hex("11 02 07 00")).running());
         assertThrows(MalformedPduException.class, () -> ServerIdReport.decode(hex("11 05 07 FF")));
-        assertThrows(MalformedPduException.class, () -> ServerIdReport.decode(hex("11 02 07 12")));
+        assertThrows(MalformedPduException.class, () -> ServerIdReport.decode(hex("11 02 07 12")),
+                "no byte can be the run indicator");
+    }
+
+    @Test
+    void decodesServerIdReportsWithAMultiByteIdBeforeTheRunIndicator() {
+        // the layout of many stacks (and of pymodbus): an ID of any length, then the run indicator
+        ServerIdReport report = ServerIdReport.decode(hex("11 08 31 35 42 36 33 42 32 FF"));
+        assertEquals("15B63B2", report.serverIdText());
+        assertTrue(report.running());
+        assertEquals(0, report.additionalData().length);
+        ServerIdReport stopped = ServerIdReport.decode(hex("11 04 79 6F 75 00"));
+        assertFalse(stopped.running(), "'malformed status: run indicator 0x79' was the old reading");
+        assertEquals("you", stopped.serverIdText());
+        assertEquals("01 02", ServerIdReport.decode(hex("11 03 01 02 FF")).serverIdText());
+    }
+
+    @Test
+    void returnQueryDataRequestsAreFramedWhateverTheirNumberOfWords() {
+        FrameLength requests = FrameLengths.requests();
+        byte[] three = new RtuFrame(5, Pdus.echo(0x1111, 0x2222, 0x3333)).encode();
+        assertEquals(12, three.length);
+        for (int have = 2; have < three.length; have++) {
+            assertEquals(FrameLength.NEED_MORE, requests.of(three, have), "not complete at " + have);
+        }
+        assertEquals(12, requests.of(three, 12));
+        byte[] twoFrames = new byte[20];
+        System.arraycopy(three, 0, twoFrames, 0, 12);
+        System.arraycopy(new RtuFrame(5, Pdus.echo(0x4444)).encode(), 0, twoFrames, 12, 8);
+        assertEquals(12, requests.of(twoFrames, 20), "the first of two frames that came together");
+        assertEquals(8, requests.of(new RtuFrame(5, hex("08 00 01 00 00")).encode(), 4), "other sub-functions: 1 word");
+        assertEquals(6 + 3 * 2, FrameLengths.responseTo(Pdus.echo(1, 2, 3)).of(hex("05 08"), 2));
+        assertArrayEquals(hex("08 00 00 00 01 00 02"), Pdus.echo(1, 2));
+    }
+
+    @Test
+    void splitDeviceIdentificationIsDecodedPartByPart() {
+        DeviceIdentification.Part first = DeviceIdentification.decodePart(hex("2B 0E 01 01 FF 01 01 00 04 41 43 4D 45"));
+        assertTrue(first.moreFollows());
+        assertEquals(1, first.nextObjectId());
+        assertThrows(MalformedPduException.class,
+                () -> DeviceIdentification.decode(hex("2B 0E 01 01 FF 01 01 00 04 41 43 4D 45")),
+                "a part is not the whole identification");
+        DeviceIdentification.Part second = DeviceIdentification.decodePart(
+                hex("2B 0E 01 01 00 00 02 01 07 31 35 42 36 33 42 32 02 03 31 2E 30"));
+        assertFalse(second.moreFollows());
+        DeviceIdentification whole = DeviceIdentification.of(java.util.List.of(first, second));
+        assertEquals("ACME", whole.vendorName());
+        assertEquals("15B63B2", whole.productCode());
+        assertEquals("1.0", whole.revision());
+        assertArrayEquals(hex("2B 0E 01 02"), Pdus.readDeviceIdentification(2));
+        assertThrows(MalformedPduException.class,
+                () -> DeviceIdentification.decodePart(hex("2B 0E 01 01 12 00 00")), "more follows must be 00 or FF");
     }
 
     @Test

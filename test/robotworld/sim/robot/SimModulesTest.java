@@ -83,11 +83,12 @@ class SimModulesTest {
     @Test
     void mandatoryCommandsAnswerAsTheSpecificationSays() {
         assertEquals("08 00 00 A5 02", ask(bumper, "08 00 00 A5 02"));
+        assertEquals("08 00 00 00 01 00 02 00 03", ask(bumper, "08 00 00 00 01 00 02 00 03"), "any number of words");
         assertEquals("88 01", ask(bumper, "08 00 01 00 00"), "only Return Query Data");
-        // report server ID: count, server id (= address), run indicator, product code
-        assertEquals("11 09 02 FF 31 35 42 36 33 41 34", ask(bumper, "11"));
+        // report server ID: count, server id (= the address), run indicator last
+        assertEquals("11 02 02 FF", ask(bumper, "11"));
         bumper.faults().stopped(true);
-        assertArrayEquals(hex("11 09 02 00 31 35 42 36 33 41 34"), simulation.respond(bumper, hex("11")));
+        assertArrayEquals(hex("11 02 02 00"), simulation.respond(bumper, hex("11")));
         String identification = ask(bumper, "2B 0E 01 00");
         assertEquals("2B 0E 01 01 00 00 03 00 06 56 65 6E 64 6F 72 01 07 31 35 42 36 33 41 34 02 03 31 2E 30",
                 identification);
