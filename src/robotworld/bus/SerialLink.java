@@ -53,6 +53,15 @@ public interface SerialLink extends Closeable {
         return read(one, 0, 1, timeout) == 1 ? one[0] & 0xFF : -1;
     }
 
+    /**
+     * Whether a peer that says nothing may be a connection that died without being closed (a network bridge that
+     * crashed or was cut off), so that opening the link again can help; a local serial port that is silent has a
+     * silent device behind it, and opening it again does not.
+     */
+    default boolean silenceMayMeanADeadConnection() {
+        return false;
+    }
+
     /** The number of bytes that can be read now without waiting. */
     int available() throws IOException;
 

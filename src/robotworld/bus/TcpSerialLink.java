@@ -119,6 +119,11 @@ public final class TcpSerialLink implements SerialLink {
     }
 
     @Override
+    public boolean silenceMayMeanADeadConnection() {
+        return true;
+    }
+
+    @Override
     public int available() throws IOException {
         requireOpen();
         return in.available();

@@ -1,8 +1,12 @@
 package robotworld.x10;
 
+import java.time.Clock;
 import java.time.DayOfWeek;
+import java.time.Instant;
 import java.time.LocalDateTime;
 import java.time.LocalTime;
+import java.time.ZoneOffset;
+import java.time.zone.ZoneRules;
 
 /**
  * The clock download that answers a power-fail poll (0xA5) or sets the clock at any time:
@@ -40,6 +44,18 @@ public record CM11aClock(LocalTime time, int dayOfYear, DayOfWeek dayOfWeek, Hou
     public static CM11aClock of(LocalDateTime dateTime, HouseCode monitoredHouse) {
         return new CM11aClock(dateTime.toLocalTime(), dateTime.getDayOfYear(), dateTime.getDayOfWeek(),
                 monitoredHouse, 0);
+    }
+
+    /**
+     * The clock for the current instant of {@code clock}, in its zone's standard time or legal (summer) time, with
+     * no flags set.
+     */
+    public static CM11aClock now(Clock clock, CM11aConfig.ClockTime kind, HouseCode monitoredHouse) {
+        Instant now = clock.instant();
+        ZoneRules rules = clock.getZone().getRules();
+        ZoneOffset offset = kind == CM11aConfig.ClockTime.STANDARD ? rules.getStandardOffset(now)
+                : rules.getOffset(now);
+        return of(LocalDateTime.ofInstant(now, offset), monitoredHouse);
     }
 
     /** The six clock bytes (without the 0x9B header). */

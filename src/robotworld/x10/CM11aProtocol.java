@@ -2,7 +2,6 @@ package robotworld.x10;
 
 import java.io.IOException;
 import java.time.Duration;
-import java.time.LocalDateTime;
 import java.util.List;
 import java.util.function.Consumer;
 import org.slf4j.Logger;
@@ -23,11 +22,16 @@ final class CM11aProtocol {
 
     private static final Logger LOG = LoggerFactory.getLogger(CM11aProtocol.class);
 
+    /** How long the idle watch waits for a first byte. */
+    private static final Duration IDLE_LOOK = Duration.ofMillis(1);
+
     private final SerialLink link;
     private final CM11aConfig config;
     private final Consumer<List<X10Event>> eventSink;
     private final UploadDecoder decoder = new UploadDecoder();
     private int pollsThisCommand;
+    /** When the last 0x55 came; the next frame keeps {@code pauseAfterReady} of quiet after it. */
+    private long lastReadyAt = System.nanoTime() - Long.MAX_VALUE / 4;
 
     CM11aProtocol(SerialLink link, CM11aConfig config, Consumer<List<X10Event>> eventSink) {
         this.link = link;
@@ -51,35 +55,44 @@ final class CM11aProtocol {
     private void transmit(X10Frame frame) throws IOException {
         byte[] bytes = frame.bytes();
         int expected = frame.checksum();
-        int failedAttempts = 0;
+        int wrongChecksums = 0;
+        int silentSends = 0;
         while (true) {
-            pauseBetweenFrames();
+            awaitQuietAfterReady();
             link.write(bytes);
             int reply = link.readByte(config.checksumTimeout());
-            if (reply != expected) {
-                if (reply == X10Constants.CM11A_POLL || reply == X10Constants.CM11A_POWER_FAIL_POLL) {
-                    answerPoll(reply, frame);
-                    continue;
+            if (reply == expected) {
+                link.write(X10Constants.CM11A_ACK);
+                int ready = awaitReady(frame);
+                if (ready == X10Constants.CM11A_READY) {
+                    return;
                 }
-                failedAttempts++;
-                if (failedAttempts >= config.maxAttempts()) {
-                    throw reply < 0
-                            ? new X10TimeoutException(portName(), "no checksum for frame " + frame + " within "
-                                    + config.checksumTimeout().toMillis() + " ms, " + failedAttempts + " attempts")
-                            : new X10ProtocolException(portName(), "wrong checksum " + Hex.of(reply)
-                                    + " (expected " + Hex.of(expected) + ") for frame " + frame + ", "
-                                    + failedAttempts + " attempts");
-                }
-                LOG.debug("{}: {} for {}, resending", portName(),
-                        reply < 0 ? "no checksum" : "checksum " + Hex.of(reply), frame);
+                answerPoll(ready, frame); // the interface polled instead of transmitting: send the frame again
                 continue;
             }
-            link.write(X10Constants.CM11A_ACK);
-            int ready = awaitReady(frame);
-            if (ready == X10Constants.CM11A_READY) {
-                return;
+            if (reply == X10Constants.CM11A_POLL || reply == X10Constants.CM11A_POWER_FAIL_POLL) {
+                answerPoll(reply, frame);
+                continue;
             }
-            answerPoll(ready, frame); // the interface polled instead of transmitting: send the frame again
+            if (reply < 0) {
+                silentSends++;
+                if (silentSends >= config.sendsToASilentInterface()) {
+                    throw new X10TimeoutException(portName(), "no checksum for frame " + frame + " within "
+                            + config.checksumTimeout().toMillis() + " ms, " + silentSends + " attempts: the "
+                            + "interface has said nothing for " + config.deadDeviceTimeout().toMillis()
+                            + " ms (unplugged, no power, or not a CM11A on this port?)");
+                }
+                LOG.debug("{}: no checksum for {}, sending it again", portName(), frame);
+                continue; // the checksum timeout was the pause
+            }
+            wrongChecksums++;
+            if (wrongChecksums >= config.maxAttempts()) {
+                throw new X10ProtocolException(portName(), "wrong checksum " + Hex.of(reply) + " (expected "
+                        + Hex.of(expected) + ") for frame " + frame + ", " + wrongChecksums + " attempts");
+            }
+            LOG.debug("{}: checksum {} for {}, sending it again in {} ms", portName(), Hex.of(reply), frame,
+                    config.resendDelay().toMillis());
+            pause(config.resendDelay()); // the interface gives up waiting for our 0x00 first
         }
     }
 
@@ -89,7 +102,11 @@ final class CM11aProtocol {
         while (true) {
             long left = deadline - System.nanoTime();
             int reply = left <= 0 ? -1 : link.readByte(Duration.ofNanos(left));
-            if (reply == X10Constants.CM11A_READY || X10Constants.looksLikePoll(reply)) {
+            if (reply == X10Constants.CM11A_READY) {
+                lastReadyAt = System.nanoTime();
+                return reply;
+            }
+            if (X10Constants.looksLikePoll(reply)) {
                 return reply;
             }
             if (reply < 0) {
@@ -113,17 +130,31 @@ final class CM11aProtocol {
         }
     }
 
+    /**
+     * Between commands: handles what the interface sent, waiting a moment for the first byte, so a link closed at
+     * the far end is noticed (a look at what is available would not see it) and can be opened again while idle.
+     */
+    void watchWhileIdle() throws IOException {
+        byte[] one = new byte[1];
+        while (link.read(one, 0, 1, IDLE_LOOK) > 0) {
+            handleIdleByte(one[0] & 0xFF);
+        }
+    }
+
     /** Handles polls and stray bytes that arrived while no command was running. */
     void serviceIdle() throws IOException {
         while (link.available() > 0) {
-            int value = link.readByte(Duration.ZERO);
-            if (value == X10Constants.CM11A_POLL) {
-                answerUploadPoll();
-            } else if (value == X10Constants.CM11A_POWER_FAIL_POLL) {
-                answerPowerFailPoll();
-            } else if (value >= 0) {
-                LOG.debug("{}: ignored stray byte {}", portName(), Hex.of(value));
-            }
+            handleIdleByte(link.readByte(Duration.ZERO));
+        }
+    }
+
+    private void handleIdleByte(int value) throws IOException {
+        if (value == X10Constants.CM11A_POLL) {
+            answerUploadPoll();
+        } else if (value == X10Constants.CM11A_POWER_FAIL_POLL) {
+            answerPowerFailPoll();
+        } else if (value >= 0) {
+            LOG.debug("{}: ignored stray byte {}", portName(), Hex.of(value));
         }
     }
 
@@ -164,9 +195,9 @@ final class CM11aProtocol {
     /** Sends 0x9B and the clock; the checksum covers the six clock bytes only. */
     void sendClock() throws IOException {
         for (int attempt = 1; attempt <= config.maxAttempts(); attempt++) {
-            CM11aClock clock = CM11aClock.of(LocalDateTime.now(config.clock()), config.monitoredHouse());
+            CM11aClock clock = CM11aClock.now(config.clock(), config.clockTime(), config.monitoredHouse());
             int expected = clock.checksum();
-            pauseBetweenFrames();
+            awaitQuietAfterReady();
             link.write(clock.frame());
             int reply = link.readByte(config.checksumTimeout());
             for (int skipped = 0; reply == X10Constants.CM11A_POWER_FAIL_POLL && expected != reply
@@ -181,6 +212,7 @@ final class CM11aProtocol {
             link.write(X10Constants.CM11A_ACK);
             int ready = link.readByte(config.readyTimeout());
             if (ready == X10Constants.CM11A_READY) {
+                lastReadyAt = System.nanoTime();
                 return;
             }
             LOG.debug("{}: {} instead of 0x55 after the clock", portName(), ready < 0 ? "nothing" : Hex.of(ready));
@@ -194,7 +226,7 @@ final class CM11aProtocol {
         pollsThisCommand = 0;
         serviceIdle();
         for (int attempt = 1; attempt <= config.maxAttempts(); attempt++) {
-            pauseBetweenFrames();
+            awaitQuietAfterReady();
             link.write(X10Constants.CM11A_STATUS_REQUEST);
             byte[] status = new byte[X10Constants.CM11A_STATUS_LENGTH];
             if (readFully(status)) {
@@ -227,13 +259,35 @@ final class CM11aProtocol {
         }
     }
 
-    private void pauseBetweenFrames() {
-        if (!config.interFrameGap().isZero()) {
-            try {
-                Thread.sleep(config.interFrameGap().toMillis());
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
+    /** Keeps {@code pauseAfterReady} of quiet after the last 0x55 before anything new goes out. */
+    private void awaitQuietAfterReady() {
+        long until = lastReadyAt + config.pauseAfterReady().toNanos();
+        long left = until - System.nanoTime();
+        if (left > 0) {
+            pause(Duration.ofNanos(left));
+        }
+    }
+
+    private static void pause(Duration duration) {
+        long until = System.nanoTime() + duration.toNanos();
+        long left;
+        while ((left = until - System.nanoTime()) > 0) {
+            java.util.concurrent.locks.LockSupport.parkNanos(left);
+            if (Thread.currentThread().isInterrupted()) {
+                return; // closing: the caller fails on the closed link next
             }
         }
+    }
+
+    /** Whether opening the link again may cure a silent interface (see {@link SerialLink}). */
+    boolean silenceMayMeanADeadConnection() {
+        return link.silenceMayMeanADeadConnection();
+    }
+
+    /** Closes and opens the link again: after a lost connection, or a silence that may be a dead one. */
+    void reopen() throws IOException {
+        link.close();
+        link.open();
+        lastReadyAt = System.nanoTime() - Long.MAX_VALUE / 4;
     }
 }

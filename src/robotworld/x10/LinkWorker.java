@@ -13,6 +13,13 @@ import robotworld.bus.LinkClosedException;
  * The one thread that talks to the CM11A. Commands from any number of threads queue up here and run one after
  * the other, so frames never interleave on the wire; between commands the thread looks for polls, so uploads and
  * power-fail requests are answered even when nobody sends anything.
+ *
+ * <p>A lost link (closed connection, unplugged adapter) is opened again: before the next command, and while idle
+ * every so often (backing off to {@link #MAX_RECONNECT_PAUSE_MILLIS}), so uploads resume when the interface is back
+ * even if nobody sends. A command meanwhile fails at once with {@link X10Exception} naming the cause. A network link
+ * that went silent (an interface that answered nothing until the dead-interface timeout) may be a dead connection
+ * that was never closed, such as a serial bridge that crashed or was cut off: it is opened again before the next
+ * command too.
  */
 final class LinkWorker {
 
@@ -37,9 +44,17 @@ final class LinkWorker {
     private final CM11aProtocol protocol;
     private final CM11aConfig config;
     private final BlockingQueue<Queued<?>> queue = new LinkedBlockingQueue<>();
+    /** Longest pause between two reconnection attempts while idle. */
+    static final long MAX_RECONNECT_PAUSE_MILLIS = 2_000;
+    private static final long FIRST_RECONNECT_PAUSE_MILLIS = 50;
+
     private final Thread thread;
     private volatile boolean closed;
     private volatile IOException linkFailure;
+    /** The last command met a silent interface: the link may be dead without knowing it. */
+    private volatile boolean linkSuspect;
+    private long reconnectPauseMillis = FIRST_RECONNECT_PAUSE_MILLIS;
+    private long nextIdleReconnect;
 
     LinkWorker(CM11aProtocol protocol, CM11aConfig config) {
         this.protocol = protocol;
@@ -71,16 +86,19 @@ final class LinkWorker {
             } catch (InterruptedException e) {
                 break;
             }
-            if (linkFailure != null) {
-                if (next != null) {
-                    next.result().completeExceptionally(new X10Exception(protocol.portName(),
-                            "the link is broken: " + linkFailure.getMessage(), linkFailure));
-                }
-                continue;
-            }
             if (next != null) {
+                if ((linkFailure != null || linkSuspect) && !reconnect()) {
+                    next.result().completeExceptionally(new X10Exception(protocol.portName(),
+                            "the link is broken and could not be opened again: " + linkFailure.getMessage(),
+                            linkFailure));
+                    continue;
+                }
                 next.run(protocol);
-                noteLinkFailure(next.result());
+                noteFailure(next.result());
+            } else if (linkFailure != null) {
+                if (System.nanoTime() - nextIdleReconnect >= 0 && reconnect()) {
+                    serviceIdle();
+                }
             } else {
                 serviceIdle();
             }
@@ -88,9 +106,38 @@ final class LinkWorker {
         failQueued();
     }
 
+    /** Opens the link again; true when it is open. Says so once when a lost link is back. */
+    private boolean reconnect() {
+        if (closed) {
+            return false;
+        }
+        try {
+            protocol.reopen();
+        } catch (IOException e) {
+            if (linkFailure == null) {
+                linkFailed(e);
+            } else {
+                linkFailure = e;
+            }
+            nextIdleReconnect = System.nanoTime() + reconnectPauseMillis * 1_000_000;
+            reconnectPauseMillis = Math.min(MAX_RECONNECT_PAUSE_MILLIS, reconnectPauseMillis * 2);
+            LOG.debug("{}: reconnecting failed: {}", protocol.portName(), e.getMessage());
+            return false;
+        }
+        if (linkFailure != null) {
+            LOG.warn("{}: link back", protocol.portName());
+        } else {
+            LOG.info("{}: the interface was silent; the link was opened again", protocol.portName());
+        }
+        linkFailure = null;
+        linkSuspect = false;
+        reconnectPauseMillis = FIRST_RECONNECT_PAUSE_MILLIS;
+        return true;
+    }
+
     private void serviceIdle() {
         try {
-            protocol.serviceIdle();
+            protocol.watchWhileIdle();
         } catch (LinkClosedException e) {
             linkFailed(e);
         } catch (IOException | RuntimeException e) {
@@ -98,10 +145,12 @@ final class LinkWorker {
         }
     }
 
-    private void noteLinkFailure(CompletableFuture<?> result) {
+    private void noteFailure(CompletableFuture<?> result) {
         result.exceptionally(e -> {
             if (e instanceof LinkClosedException closedLink) {
                 linkFailed(closedLink);
+            } else if (e instanceof X10TimeoutException && protocol.silenceMayMeanADeadConnection()) {
+                linkSuspect = true;
             }
             return null;
         });
@@ -109,7 +158,8 @@ final class LinkWorker {
 
     private void linkFailed(IOException e) {
         if (!closed && linkFailure == null) {
-            LOG.warn("{}: link lost: {}", protocol.portName(), e.getMessage());
+            LOG.warn("{}: link lost: {}; reconnecting", protocol.portName(), e.getMessage());
+            nextIdleReconnect = System.nanoTime();
         }
         linkFailure = e;
     }

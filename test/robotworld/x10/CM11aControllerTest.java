@@ -228,7 +228,8 @@ class CM11aControllerTest {
     @ParameterizedTest
     @EnumSource(Transport.class)
     void deadDeviceGivesATimeoutWithinTheDocumentedTime(Transport transport) throws Exception {
-        CM11aConfig config = Cm11aRig.fastConfig().withChecksumTimeout(Duration.ofMillis(100));
+        CM11aConfig config = Cm11aRig.fastConfig().withChecksumTimeout(Duration.ofMillis(100))
+                .withDeadInterfaceTimeout(Duration.ofMillis(300));
         try (Cm11aRig rig = Cm11aRig.connect(transport, Cm11aRig.fastSim(), config)) {
             rig.sim.powerOff(); // the line stays up, the interface says nothing
             long start = System.nanoTime();
@@ -250,7 +251,8 @@ class CM11aControllerTest {
     @ParameterizedTest
     @EnumSource(Transport.class)
     void vanishedInterfaceFailsFast(Transport transport) throws Exception {
-        CM11aConfig config = Cm11aRig.fastConfig().withChecksumTimeout(Duration.ofMillis(100));
+        CM11aConfig config = Cm11aRig.fastConfig().withChecksumTimeout(Duration.ofMillis(100))
+                .withDeadInterfaceTimeout(Duration.ofMillis(300));
         try (Cm11aRig rig = Cm11aRig.connect(transport, Cm11aRig.fastSim(), config)) {
             rig.sim.close(); // TCP: the bridge closes the connection; pty: the far end goes quiet
             long start = System.nanoTime();

@@ -33,6 +33,10 @@ class CM11aProtocolTest {
             .withChecksumTimeout(Duration.ofMillis(150))
             .withReadyTimeout(Duration.ofMillis(400))
             .withIdlePollInterval(Duration.ofMillis(5))
+            .withPauseAfterReady(Duration.ZERO)
+            .withResendDelay(Duration.ZERO)
+            .withDeadInterfaceTimeout(Duration.ofMillis(450))
+            .withClockTime(CM11aConfig.ClockTime.LEGAL)
             .withClock(Clock.fixed(NOW.toInstant(ZoneOffset.UTC), ZoneOffset.UTC));
 
     private LinkPair pair;

@@ -54,7 +54,10 @@ final class Cm11aRig implements AutoCloseable {
         return CM11aConfig.defaults()
                 .withChecksumTimeout(java.time.Duration.ofMillis(300))
                 .withReadyTimeout(java.time.Duration.ofMillis(1_000))
-                .withIdlePollInterval(java.time.Duration.ofMillis(5));
+                .withIdlePollInterval(java.time.Duration.ofMillis(5))
+                .withPauseAfterReady(java.time.Duration.ZERO)
+                .withResendDelay(java.time.Duration.ZERO)
+                .withDeadInterfaceTimeout(java.time.Duration.ofMillis(900));
     }
 
     @Override

@@ -104,7 +104,8 @@ final class XVSMWorld implements AutoCloseable {
         bus = new RS485Bus(robot.serve("tcp://127.0.0.1:0"), SerialSettings.eightNoneOne(115_200), BUS_TIMING);
         x10 = CM11aController.open(cm11a.listen(0), CM11aConfig.defaults()
                 .withChecksumTimeout(Duration.ofMillis(200)).withReadyTimeout(Duration.ofMillis(500))
-                .withMaxAttempts(2).withIdlePollInterval(Duration.ofMillis(5)));
+                .withMaxAttempts(2).withIdlePollInterval(Duration.ofMillis(5)).withPauseAfterReady(Duration.ZERO)
+                .withResendDelay(Duration.ZERO).withDeadInterfaceTimeout(Duration.ofMillis(400)));
         motorHardware = new MotorModuleProxy(bus, 1, MOTOR);
         bumperHardware = new BumperModuleProxy(bus, BUMPER_ADDRESS, BUMPER);
         servoHardware = new ServoModuleProxy(bus, 3, SERVO);
