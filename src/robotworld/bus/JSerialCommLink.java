@@ -21,6 +21,7 @@ public final class JSerialCommLink implements SerialLink {
     private final String path;
     private final SerialSettings settings;
     private SerialPort port;
+    private PortLock portLock;
     private volatile boolean open;
     private int currentReadTimeoutMs = -1;
 
@@ -40,11 +41,13 @@ public final class JSerialCommLink implements SerialLink {
         if (open) {
             return;
         }
+        PortLock lock = PortLock.acquire(path); // refuses a port another program holds, naming it
         SerialPort candidate;
         try {
             // resolves the path now: a pty link must already exist
             candidate = SerialPort.getCommPort(path);
         } catch (RuntimeException e) {
+            lock.close();
             throw new IOException(path + ": no such serial port (" + e.getMessage() + ")", e);
         }
         candidate.setComPortParameters(settings.baudRate(), settings.dataBits(), stopBits(), parity());
@@ -52,9 +55,11 @@ public final class JSerialCommLink implements SerialLink {
         candidate.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING | SerialPort.TIMEOUT_WRITE_BLOCKING,
                 1, WRITE_TIMEOUT_MS);
         if (!candidate.openPort()) {
-            throw new IOException(path + ": cannot open serial port (error " + candidate.getLastErrorCode()
-                    + " at " + candidate.getLastErrorLocation() + ")");
+            lock.close();
+            throw new IOException(path + ": cannot open serial port: " + reason(candidate.getLastErrorCode())
+                    + " (error " + candidate.getLastErrorCode() + " at " + candidate.getLastErrorLocation() + ")");
         }
+        portLock = lock;
         port = candidate;
         currentReadTimeoutMs = 1;
         open = true;
@@ -138,6 +143,19 @@ public final class JSerialCommLink implements SerialLink {
         }
         open = false;
         port.closePort();
+        portLock.close();
+    }
+
+    /** What an operating system error of opening means, and what to do about it. */
+    private static String reason(int errno) {
+        return switch (errno) {
+            case 2 -> "no such device";
+            case 13 -> "permission denied (on Linux, join the group that owns it, e.g. 'sudo usermod -aG dialout "
+                    + "$USER', then log in again)";
+            case 16 -> "the device is busy: another program has it open";
+            case 20, 21 -> "not a serial device";
+            default -> "the operating system refused it";
+        };
     }
 
     private void setReadTimeout(int millis) {
