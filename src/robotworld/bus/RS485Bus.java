@@ -85,6 +85,21 @@ public final class RS485Bus implements Closeable {
         return name == null ? "address " + address : name + " at address " + address;
     }
 
+    /**
+     * How the echo of an RS-485 adapter without echo suppression is handled: {@link EchoCancellation#AUTO} (the
+     * default) detects it and drops it from then on, {@code ON} always drops it, {@code OFF} fails calls with
+     * {@link AdapterEchoException} saying so.
+     */
+    public RS485Bus echoCancellation(EchoCancellation mode) {
+        master.echoCancellation(Objects.requireNonNull(mode, "mode"));
+        return this;
+    }
+
+    /** Whether the adapter was seen echoing requests (then, in AUTO mode, their echo is dropped). */
+    public boolean echoDetected() {
+        return master.echoDetected();
+    }
+
     // ----- the mandatory commands of every module -----
 
     /**

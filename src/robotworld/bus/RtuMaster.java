@@ -2,6 +2,7 @@ package robotworld.bus;
 
 import java.io.IOException;
 import java.time.Duration;
+import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
@@ -51,12 +52,13 @@ final class RtuMaster {
     record CallPolicy(Duration replyTimeout, int attempts, boolean retryTimeouts) {
     }
 
-    private enum Kind { OK, TIMEOUT, CORRUPT, WRONG_FUNCTION, REFUSED, WRONG_ADDRESS }
+    private enum Kind { OK, TIMEOUT, CORRUPT, WRONG_FUNCTION, REFUSED, WRONG_ADDRESS, ADAPTER_ECHO }
 
     /** What came back; {@code from} is the address the frame named. */
     private record Reply(Kind kind, byte[] pdu, int from) {
         static final Reply TIMEOUT = new Reply(Kind.TIMEOUT, null, -1);
         static final Reply CORRUPT = new Reply(Kind.CORRUPT, null, -1);
+        static final Reply ADAPTER_ECHO = new Reply(Kind.ADAPTER_ECHO, null, -1);
 
         Reply(Kind kind, byte[] pdu) {
             this(kind, pdu, -1);
@@ -72,6 +74,11 @@ final class RtuMaster {
     private final long interByteNanos;
     private final long lateReplyNanos;
     private final IntFunction<String> describe;
+    private final EchoCanceller echo;
+    /** The last request frame written, to recognise its echo among stale bytes. */
+    private byte[] lastSent;
+    /** The last call was answered by a copy of its request (a write's reply, or its echo taken for it). */
+    private boolean answeredByCopy;
     private final byte[] buffer = new byte[2 * RtuFrame.MAX_LENGTH];
     private final AtomicLong transactions = new AtomicLong();
     private final AtomicLong retries = new AtomicLong();
@@ -102,6 +109,21 @@ final class RtuMaster {
         this.interByteNanos = busTiming.interByteTimeout().toNanos();
         this.lateReplyNanos = LATE_REPLY_TIMEOUTS * busTiming.responseTimeout().toNanos();
         this.describe = describe;
+        this.echo = new EchoCanceller(link.portName());
+    }
+
+    /** How an adapter's echo of each request is handled (default {@link EchoCancellation#AUTO}). */
+    void echoCancellation(EchoCancellation mode) {
+        echo.mode(mode);
+    }
+
+    EchoCancellation echoCancellation() {
+        return echo.mode();
+    }
+
+    /** Whether the adapter was seen echoing requests. */
+    boolean echoDetected() {
+        return echo.detected();
     }
 
     RtuTiming timing() {
@@ -141,10 +163,17 @@ final class RtuMaster {
                 // a late reply to an earlier attempt of this call answers the same request: it is accepted
                 Reply reply = readReply(address, pdu, length, sent + policy.replyTimeout().toNanos(), true);
                 if (reply.kind() == Kind.OK) {
+                    answeredByCopy = Arrays.equals(reply.pdu(), pdu);
+                    if (answeredByCopy && echo.undecided()) {
+                        settleEchoQuestion(address, pdu, length, sent + policy.replyTimeout().toNanos());
+                    }
                     return reply.pdu();
                 }
                 if (reply.kind() == Kind.REFUSED) {
                     throw refused(address, pdu, reply.pdu());
+                }
+                if (reply.kind() == Kind.ADAPTER_ECHO) {
+                    throw failure(address, pdu, reply, attempt, policy); // every retry would be the same
                 }
                 last = reply;
                 if (reply.kind() == Kind.TIMEOUT) {
@@ -209,6 +238,9 @@ final class RtuMaster {
             drainStale();
             sleepUntil(lineQuietSince + frameGapNanos);
             link.write(frame);
+            echo.sent(frame);
+            lastSent = frame;
+            answeredByCopy = false;
             transactions.incrementAndGet();
             // the bytes are on their way: the line is busy until they have left at the baud rate
             lineQuietSince = System.nanoTime() + timing.wireNanos(frame.length);
@@ -248,6 +280,11 @@ final class RtuMaster {
             while (true) {
                 long wait = have == 0 ? deadline - System.nanoTime() : interByteNanos;
                 if (wait <= 0) {
+                    byte[] copy = echo.takeAmbiguousCopy();
+                    if (copy != null && copy[0] == (byte) address) {
+                        // what was dropped as the adapter's echo was the reply itself: this adapter did not echo
+                        return classify(address, request, RtuFrame.decode(copy, copy.length).pdu());
+                    }
                     return Reply.TIMEOUT;
                 }
                 int n = link.read(buffer, have, buffer.length - have, millisAtLeastOne(wait));
@@ -255,6 +292,15 @@ final class RtuMaster {
                     have += n;
                     lineQuietSince = System.nanoTime();
                 }
+                int stripped = echo.strip(buffer, have, n == 0);
+                if (stripped == EchoCanceller.NEED_MORE) {
+                    continue;
+                }
+                if (stripped == EchoCanceller.ECHO_WHILE_OFF) {
+                    skipUntilSilence();
+                    return Reply.ADAPTER_ECHO;
+                }
+                have = stripped;
                 if (have == 0) {
                     continue;
                 }
@@ -291,6 +337,18 @@ final class RtuMaster {
         } catch (IOException e) {
             throw linkFailure(address, e);
         }
+    }
+
+    /**
+     * A write (or echo request) was answered by a copy of itself, and whether the adapter echoes is not known yet:
+     * the copy was either the reply or the adapter's echo of the request. Waiting once for a second copy tells, so
+     * that the real reply can never be taken for the answer to the next request.
+     */
+    private void settleEchoQuestion(int address, byte[] request, FrameLength length, long deadline) {
+        Reply second = readReply(address, request, length, deadline);
+        boolean copy = second.kind() == Kind.OK && Arrays.equals(second.pdu(), request);
+        echo.settle(copy);
+        LOG.debug("{}: {}", link.portName(), copy ? "the adapter echoes requests" : "the adapter does not echo");
     }
 
     /** Whether {@code frame} looks like the answer to {@code request} from an address that owes no reply. */
@@ -413,7 +471,10 @@ final class RtuMaster {
         if (have == 0) {
             return;
         }
-        if (Crc16.isValidFrame(buffer, have)) {
+        if (answeredByCopy && have == lastSent.length && Arrays.equals(buffer, 0, have, lastSent, 0, have)) {
+            echo.staleFrameEqualsLastRequest(); // the real reply of a write, after its echo passed for it
+            LOG.debug("dropped a late copy of the last request on {}", link.portName());
+        } else if (Crc16.isValidFrame(buffer, have)) {
             stray(RtuFrame.decode(buffer, have));
         } else {
             LOG.debug("dropped {} stale bytes on {}: {}", have, link.portName(), RtuFrame.hex(buffer, have));
@@ -456,6 +517,8 @@ final class RtuMaster {
                     + " within " + millis(policy.replyTimeout()) + " (" + tries + ")");
             case CORRUPT -> new BusCrcException(link.portName(), address, who + ": corrupted reply (CRC error) to "
                     + function + " (" + tries + ")");
+            case ADAPTER_ECHO -> new AdapterEchoException(link.portName(), address, who + ": "
+                    + EchoCanceller.hint());
             case WRONG_ADDRESS -> new BusProtocolException(link.portName(), address, who + ": the reply to "
                     + function + " came from address " + last.from() + " (" + tries + "): a module listens at address "
                     + address + " but answers as address " + last.from() + "; check its address setting");

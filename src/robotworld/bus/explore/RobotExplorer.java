@@ -8,6 +8,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Pattern;
+import robotworld.bus.AdapterEchoException;
 import robotworld.bus.BusCrcException;
 import robotworld.bus.BusException;
 import robotworld.bus.BusProtocolException;
@@ -119,13 +120,15 @@ public final class RobotExplorer {
         private final Set<Integer> settled = new HashSet<>();
         private final Set<String> names = new HashSet<>();
         private int linkFailures;
+        /** The adapter echoes and echo cancellation is off: every address would fail the same way. */
+        private boolean echoing;
 
         Scan(ExplorationListener listener) {
             this.listener = listener;
         }
 
         boolean linkGone() {
-            return linkFailures >= LINK_FAILURES_TO_GIVE_UP;
+            return linkFailures >= LINK_FAILURES_TO_GIVE_UP || echoing;
         }
 
         /** First contact with the short scan timeout. */
@@ -222,6 +225,9 @@ public final class RobotExplorer {
                 kind = AddressProblem.Kind.TIMEOUT;
             } else if (e instanceof BusCrcException) {
                 kind = AddressProblem.Kind.CRC_ERROR;
+            } else if (e instanceof AdapterEchoException) {
+                kind = AddressProblem.Kind.PROTOCOL_ERROR;
+                echoing = true;
             } else if (e instanceof ModuleRefusedException) {
                 kind = AddressProblem.Kind.EXCEPTION_RESPONSE;
             } else if (e instanceof BusProtocolException) {
@@ -243,8 +249,15 @@ public final class RobotExplorer {
         }
 
         ExplorationResult result(String robotName, Duration elapsed) throws DescriptionException {
-            if (linkGone()) {
+            if (echoing) {
+                notes.add("the scan stopped early: the adapter echoes every request and echo cancellation is off "
+                        + "(--echo on, or auto)");
+            } else if (linkGone()) {
                 notes.add("the scan stopped early: the link failed " + LINK_FAILURES_TO_GIVE_UP + " times in a row");
+            }
+            if (bus.echoDetected()) {
+                notes.add("the adapter echoes every request (an RS-485 adapter without echo suppression): echo "
+                        + "cancellation was turned on (--echo on sets it from the start)");
             }
             List<Integer> order = new ArrayList<>();
             for (int i = 0; i < found.size(); i++) {

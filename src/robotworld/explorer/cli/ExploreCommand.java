@@ -13,6 +13,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import robotworld.bus.BusTiming;
+import robotworld.bus.EchoCancellation;
 import robotworld.bus.InvalidPortNameException;
 import robotworld.bus.RS485Bus;
 import robotworld.bus.SerialSettings;
@@ -72,6 +73,11 @@ final class ExploreCommand implements Callable<Integer> {
             description = "tries per command before an address is given up (default: ${DEFAULT-VALUE})")
     private int attempts;
 
+    @Option(names = "--echo", paramLabel = "auto|on|off", defaultValue = "auto",
+            description = "an RS-485 adapter that echoes what it sends: auto detects it, on drops the echo, off "
+                    + "reports it (default: ${DEFAULT-VALUE})")
+    private String echo;
+
     @Option(names = "--from", paramLabel = "ADDRESS", defaultValue = "1", description = "first address (default: 1)")
     private int from;
 
@@ -97,6 +103,11 @@ final class ExploreCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         try (bus) {
+            try {
+                bus.echoCancellation(EchoCancellation.parse(echo));
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), "--echo: " + e.getMessage());
+            }
             RobotExplorer explorer;
             try {
                 explorer = new RobotExplorer(bus, new ModuleCatalog(folder)).addresses(from, to)

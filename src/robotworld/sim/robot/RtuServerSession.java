@@ -32,11 +32,22 @@ final class RtuServerSession implements Runnable {
     private final RtuTiming rtu;
     private final LineTiming timing;
     private final long silenceNanos;
+    private final java.util.function.BooleanSupplier echoRequests;
     private final AtomicLong requests = new AtomicLong();
     private final byte[] buffer = new byte[2 * RtuFrame.MAX_LENGTH];
     private volatile boolean closed;
 
     RtuServerSession(SerialLink link, Simulation simulation, RtuTiming rtu, LineTiming timing) {
+        this(link, simulation, rtu, timing, () -> false);
+    }
+
+    /**
+     * @param echoRequests whether the line echoes every request back to the master before any reply, as an RS-485
+     *        adapter without echo suppression does
+     */
+    RtuServerSession(SerialLink link, Simulation simulation, RtuTiming rtu, LineTiming timing,
+            java.util.function.BooleanSupplier echoRequests) {
+        this.echoRequests = echoRequests;
         this.link = link;
         this.simulation = simulation;
         this.rtu = rtu;
@@ -100,6 +111,9 @@ final class RtuServerSession implements Runnable {
     }
 
     private void serve(byte[] frame, long firstByteAt, long lastByteAt) throws IOException {
+        if (echoRequests.getAsBoolean()) {
+            link.write(frame); // the master's adapter hears its own request
+        }
         if (!Crc16.isValidFrame(frame, frame.length)) {
             LOG.debug("ignored a request with a wrong CRC: {}", RtuFrame.hex(frame, frame.length));
             return;

@@ -27,6 +27,7 @@ public final class SimulatedRobot implements AutoCloseable {
     private final Simulation simulation;
     private final RtuTiming rtu;
     private final List<AutoCloseable> endpoints = new ArrayList<>();
+    private volatile boolean echoRequests;
 
     private SimulatedRobot(SimRobotConfig config) {
         this.config = config;
@@ -102,7 +103,15 @@ public final class SimulatedRobot implements AutoCloseable {
     }
 
     private RtuServerSession session(SerialLink link) {
-        return new RtuServerSession(link, simulation, rtu, config.timing());
+        return new RtuServerSession(link, simulation, rtu, config.timing(), () -> echoRequests);
+    }
+
+    /**
+     * Makes the line echo every request back to the master before the reply, as a half-duplex RS-485 adapter
+     * without echo suppression does on the master's side.
+     */
+    public void echoRequests(boolean value) {
+        echoRequests = value;
     }
 
     /** Stops serving and stops the clock. */
