@@ -8,8 +8,8 @@ import robotworld.x10.X10Function;
 /**
  * A simulated lamp module (e.g. LM465). Brightness is kept in the 22 X10 steps. Like the real module it goes to
  * full brightness when switched on from off, keeps its level when switched on while on, and when off it first
- * comes on at full brightness before a dim or bright is applied. Extended code 0x31 (preset dim, data 0..63)
- * sets the level directly.
+ * comes on at full brightness before a dim or bright is applied. Preset Dim (level 0..31) and extended code 0x31
+ * (preset dim, data 0..63) set the level directly.
  */
 public final class SimulatedLampModule extends SimulatedX10Module {
 
@@ -61,6 +61,13 @@ public final class SimulatedLampModule extends SimulatedX10Module {
             level = X10Constants.DIM_STEPS_FULL_RANGE;
             setOn(true);
         }
+    }
+
+    /** Preset Dim: the level of 31 becomes the nearest of the 22 steps; level 0 switches the lamp off. */
+    @Override
+    synchronized void applyPresetDim(int presetLevel) {
+        level = Math.round(presetLevel * (float) X10Constants.DIM_STEPS_FULL_RANGE / 31);
+        setOn(level > 0);
     }
 
     @Override

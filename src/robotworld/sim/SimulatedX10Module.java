@@ -36,6 +36,10 @@ public abstract class SimulatedX10Module {
     /** Reacts to a function addressed to this module (or to its whole house). */
     abstract void apply(X10Function function, int dimSteps);
 
+    /** Reacts to Preset Dim to {@code level} of 31; the default (an appliance) ignores it. */
+    void applyPresetDim(int level) {
+    }
+
     /** Reacts to an extended code sent to this module; the default ignores it. */
     void applyExtended(int data, int command) {
     }

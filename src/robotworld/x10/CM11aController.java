@@ -122,6 +122,21 @@ public final class CM11aController implements AutoCloseable {
         }
     }
 
+    /**
+     * Sets the lamp at {@code address} to {@code level} of 31 with Preset Dim (0 = off): the address frame, then
+     * Preset Dim 1 (levels 0..15) or 2 (16..31) with the level's four low bits, in reversed order, in place of the
+     * house code.
+     */
+    public void presetDim(X10Address address, int level) {
+        if (level < 0 || level > 31) {
+            throw new IllegalArgumentException("preset dim level must be 0..31, was " + level);
+        }
+        int low = level & 0x0F;
+        int nibble = (low & 1) << 3 | (low & 2) << 1 | (low & 4) >> 1 | (low & 8) >> 3;
+        X10Function preset = level < 16 ? X10Function.PRESET_DIM_1 : X10Function.PRESET_DIM_2;
+        send(X10Frame.address(address), X10Frame.function(HouseCode.ofCode(nibble), preset));
+    }
+
     /** Sends an extended code (e.g. preset dim, command 0x31) to {@code address}. */
     public void sendExtended(X10Address address, int data, int command) {
         send(X10Frame.extended(address, data, command));

@@ -28,6 +28,8 @@ final class UploadDecoder {
      *
      * @param buffer the function/address mask followed by the data bytes
      */
+    private HouseCode lastAddressed;
+
     List<X10Event> decode(byte[] buffer) {
         List<X10Event> events = new ArrayList<>();
         if (buffer.length == 0) {
@@ -45,6 +47,15 @@ final class UploadDecoder {
                 continue;
             }
             X10Function function = X10Function.ofCode(value);
+            if (function == X10Function.PRESET_DIM_1 || function == X10Function.PRESET_DIM_2) {
+                // the "house" nibble is part of the level: the units are those addressed last
+                HouseCode addressedHouse = lastAddressed == null ? house : lastAddressed;
+                events.add(new X10Event(addressedHouse, addressedIn(addressedHouse), function,
+                        presetLevel(value >> 4, function), 0, 0));
+                functionSeen.put(addressedHouse, true);
+                index++;
+                continue;
+            }
             int extra = function.usesDimSteps() ? 1 : function == X10Function.EXTENDED_CODE ? 3 : 0;
             if (index + extra >= dataLength) {
                 LOG.warn("upload ends inside {} {} (buffer {}): ignored", house, function, Hex.of(buffer));
@@ -57,7 +68,14 @@ final class UploadDecoder {
         return events;
     }
 
+    /** Preset Dim's level 0..31: the nibble's bits in reversed order, plus 16 for Preset Dim 2. */
+    static int presetLevel(int nibble, X10Function function) {
+        int reversed = (nibble & 1) << 3 | (nibble & 2) << 1 | (nibble & 4) >> 1 | (nibble & 8) >> 3;
+        return reversed + (function == X10Function.PRESET_DIM_2 ? 16 : 0);
+    }
+
     private void address(HouseCode house, int unit) {
+        lastAddressed = house;
         TreeSet<Integer> units = addressed.computeIfAbsent(house, h -> new TreeSet<>());
         if (functionSeen.getOrDefault(house, false)) {
             units.clear();

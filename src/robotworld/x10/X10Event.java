@@ -10,7 +10,8 @@ import java.util.stream.Collectors;
  * @param house the house code of the function
  * @param units addressed units 1..16 in ascending order; for extended code the unit of the extended frame
  * @param function the function
- * @param dimLevel for Dim and Bright the change in brightness, 0..210 (210 = full range); otherwise 0
+ * @param dimLevel for Dim and Bright the change in brightness, 0..210 (210 = full range); for Preset Dim the
+ *        level 0..31 (its house is that of the units addressed last); otherwise 0
  * @param extendedData for extended code the data byte; otherwise 0
  * @param extendedCommand for extended code the command byte; otherwise 0
  */
@@ -44,6 +45,8 @@ public record X10Event(HouseCode house, List<Integer> units, X10Function functio
         String what = function.toString();
         if (function.usesDimSteps()) {
             what += " " + dimLevel + "/210";
+        } else if (function == X10Function.PRESET_DIM_1 || function == X10Function.PRESET_DIM_2) {
+            what += " " + dimLevel + "/31";
         } else if (function == X10Function.EXTENDED_CODE) {
             what += String.format(" data %02X command %02X", extendedData, extendedCommand);
         }

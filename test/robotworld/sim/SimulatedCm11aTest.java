@@ -196,4 +196,23 @@ class SimulatedCm11aTest {
             assertTrue(fastest < minimum + 500, "fastest of 3 took " + fastest + " ms, minimum " + minimum);
         }
     }
+
+    @Test
+    void presetDimSetsTheAddressedLampAndIsLoggedWithItsLevelNotAHouse() throws Exception {
+        X10Address lamp = X10Address.of('A', 1);
+        try (robotworld.x10.CM11aController controller = robotworld.x10.CM11aController.open(sim.listen(0),
+                robotworld.x10.CM11aConfig.defaults().forFastSimulator())) {
+            controller.presetDim(lamp, 10);
+            assertEquals(Math.round(10 * 22f / 31), sim.lamp(lamp).level());
+            assertTrue(sim.lamp(lamp).isOn());
+            controller.presetDim(lamp, 31);
+            assertEquals(22, sim.lamp(lamp).level());
+            controller.presetDim(lamp, 0);
+            assertFalse(sim.lamp(lamp).isOn());
+        }
+        List<String> log = sim.powerLineLog();
+        assertTrue(log.containsAll(List.of("A1", "Preset Dim 10/31", "Preset Dim 31/31", "Preset Dim 0/31")),
+                log.toString());
+        assertTrue(log.stream().noneMatch(line -> line.startsWith("J ")), log.toString());
+    }
 }

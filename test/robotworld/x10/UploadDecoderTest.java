@@ -58,4 +58,16 @@ class UploadDecoderTest {
     void truncatedDimIsDropped() {
         assertEquals(List.of(), decoder.decode(Bytes.of("02 E9 E4")));
     }
+
+    @Test
+    void presetDimCarriesItsLevelWhereTheHouseWouldBe() {
+        UploadDecoder decoder = new UploadDecoder();
+        // A1 addressed, then Preset Dim 1 with nibble 0xF (J): level 15
+        List<X10Event> events = decoder.decode(new byte[] {0x02, 0x66, (byte) 0xFA});
+        assertEquals(1, events.size());
+        assertEquals(HouseCode.A, events.get(0).house());
+        assertEquals(List.of(1), events.get(0).units());
+        assertEquals(15, events.get(0).dimLevel());
+        assertEquals("A1 Preset Dim 1 15/31", events.get(0).toString());
+    }
 }
