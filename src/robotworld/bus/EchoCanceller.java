@@ -93,10 +93,6 @@ final class EchoCanceller {
             }
             return have;
         }
-        if (mode == EchoCancellation.AUTO && absent) {
-            pending = null;
-            return have;
-        }
         if (have < echo.length) {
             if (lineSilent) {
                 pending = null;
@@ -117,7 +113,8 @@ final class EchoCanceller {
                     return have; // could be the reply of a write: not taken as an echo before one is proven
                 }
                 if (!detected) {
-                    detected = true;
+                    detected = true; // also after an adapter without echo: it may have been swapped
+                    absent = false;
                     LOG.warn("{}: the adapter echoes every request (an RS-485 adapter without echo suppression): "
                             + "echo cancellation is on from now", portName);
                 }

@@ -11,6 +11,8 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import robotworld.sim.Cm11aSimulatorRunner;
 import robotworld.sim.Cm11aTiming;
+import robotworld.sim.control.Cm11aControl;
+import robotworld.sim.control.ControlChannel;
 
 /** {@code rwe simulate DEVICE ...}: runs a simulated device until stopped with Ctrl-C. */
 @Command(name = "simulate", mixinStandardHelpOptions = true,
@@ -57,6 +59,10 @@ public final class SimulateCommand implements Runnable {
         @Option(names = "--power-fail", description = "start as after a power failure: poll 0xA5 until the clock is set")
         private boolean powerFail;
 
+        @Option(names = "--control", paramLabel = "stdin|tcp://127.0.0.1:PORT",
+                description = "a control channel to inject power-line traffic and faults (see docs/x10.md)")
+        private String control;
+
         @Spec
         private CommandSpec spec;
 
@@ -84,6 +90,15 @@ public final class SimulateCommand implements Runnable {
                 out.flush();
             });
             out.println(started.describe());
+            if (control != null) {
+                try {
+                    out.println("control channel on " + ControlChannel.open(control, new Cm11aControl(started.sim()))
+                            .where() + " (help lists the commands)");
+                } catch (IllegalArgumentException e) {
+                    started.sim().close();
+                    throw new ParameterException(spec.commandLine(), "--control: " + e.getMessage());
+                }
+            }
             out.println("press Ctrl-C to stop");
             out.flush();
             stopped.await();

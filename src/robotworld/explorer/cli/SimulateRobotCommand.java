@@ -15,6 +15,8 @@ import robotworld.core.RuntimeSettings;
 import robotworld.explorer.monitor.MonitorSpace;
 import robotworld.sim.robot.GroundTruthFeed;
 import robotworld.space.Capi;
+import robotworld.sim.control.ControlChannel;
+import robotworld.sim.control.RobotControl;
 import robotworld.sim.robot.LineTiming;
 import robotworld.sim.robot.SimRobotConfig;
 import robotworld.sim.robot.SimRobotConfigException;
@@ -64,6 +66,10 @@ final class SimulateRobotCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "no status line every second")
     private boolean quiet;
 
+    @Option(names = "--control", paramLabel = "stdin|tcp://127.0.0.1:PORT",
+            description = "a control channel to move the robot, push obstacles, fail or slow modules (see docs/bus.md)")
+    private String control;
+
     @Spec
     private CommandSpec spec;
 
@@ -90,6 +96,14 @@ final class SimulateRobotCommand implements Callable<Integer> {
             }
             out.println(robot.describe());
             out.println("serving the bus on " + served);
+            if (control != null) {
+                try {
+                    out.println("control channel on " + ControlChannel.open(control, new RobotControl(robot)).where()
+                            + " (help lists the commands)");
+                } catch (IllegalArgumentException e) {
+                    throw new ParameterException(spec.commandLine(), "--control: " + e.getMessage());
+                }
+            }
             String name = participant != null ? participant : chosen.name();
             try (GroundTruthFeed feed = GroundTruthFeed.start(robot, name, space, GroundTruthFeed.DEFAULT_PERIOD)) {
                 if (space != null) {

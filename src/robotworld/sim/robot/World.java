@@ -41,7 +41,7 @@ public final class World {
         }
         this.width = width;
         this.height = height;
-        this.obstacles = List.copyOf(obstacles);
+        this.obstacles = new ArrayList<>(obstacles);
         this.radius = radius;
         this.wheelBase = wheelBase;
         this.maxSpeed = maxSpeed;
@@ -69,7 +69,30 @@ public final class World {
     }
 
     public List<Rect> obstacles() {
-        return obstacles;
+        return List.copyOf(obstacles);
+    }
+
+    /**
+     * Puts an obstacle into the arena while the simulation runs (someone pushes a box in the robot's way).
+     *
+     * @throws IllegalArgumentException when it would overlap the robot
+     */
+    public void addObstacle(Rect obstacle) {
+        solids.add(obstacle);
+        if (collides(pose.x(), pose.y())) {
+            solids.remove(solids.size() - 1);
+            throw new IllegalArgumentException("the obstacle " + obstacle + " would overlap the robot at " + pose);
+        }
+        obstacles.add(obstacle);
+    }
+
+    /** Takes an obstacle out of the arena; false when there is no such obstacle. */
+    public boolean removeObstacle(Rect obstacle) {
+        boolean removed = obstacles.remove(obstacle);
+        if (removed) {
+            solids.remove(obstacle);
+        }
+        return removed;
     }
 
     public double radius() {
