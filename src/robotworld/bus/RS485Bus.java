@@ -234,6 +234,31 @@ public final class RS485Bus implements Closeable {
         master.onStrayFrame(listener);
     }
 
+    /**
+     * Who hears of addresses whose exchange was disturbed (a corrupted or cut-short reply while asking them, or
+     * bytes starting with their address that were no whole frame): bus exploration asks them again.
+     */
+    public void onDisturbance(java.util.function.IntConsumer listener) {
+        master.onDisturbance(listener);
+    }
+
+    /**
+     * Identification asked once more with the normal reply timeout, retried on corrupted replies but not on
+     * silence: how exploration asks again at an address whose exchange was disturbed.
+     *
+     * @throws BusTimeoutException when nobody answers
+     */
+    public DeviceIdentification reprobe(int address) {
+        byte[] response = master.call(checkAddress(address), Pdus.readDeviceIdentification(),
+                new RtuMaster.CallPolicy(timing.responseTimeout(), timing.attempts(), false));
+        return followIdentification(address, response);
+    }
+
+    /** How fast reply bytes arrive on this line (see {@link ReplyPacing}). */
+    public ReplyPacing replyPacing() {
+        return master.pacing();
+    }
+
     /** Listens for late replies for {@code window}, reporting them to the stray-frame listener. */
     public void listenForStrays(Duration window) {
         master.listenForStrays(window, Pdus.readDeviceIdentification());

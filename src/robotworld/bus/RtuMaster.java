@@ -92,11 +92,16 @@ final class RtuMaster {
     private final byte[][] owedRequest = new byte[248][];
     private final long[] owedUntil = new long[248];
     private volatile Consumer<RtuFrame> strayListener = frame -> { };
+    private volatile java.util.function.IntConsumer disturbanceListener = address -> { };
     private long lineQuietSince = System.nanoTime();
     private Pending pending;
     private boolean linkBroken;
     /** During a call: a frame from an address that owes nothing, answering our request (see readReply). */
     private RtuFrame suspect;
+    /** When the first byte of the frame being read came, and in how many reads it has come so far. */
+    private long firstByteAt;
+    private int reads;
+    private final ReplyPacing pacing;
 
     /**
      * @param describe names an address for messages, e.g. "BumperModule 'Bumper-Sensor' at address 2"
@@ -110,6 +115,12 @@ final class RtuMaster {
         this.lateReplyNanos = LATE_REPLY_TIMEOUTS * busTiming.responseTimeout().toNanos();
         this.describe = describe;
         this.echo = new EchoCanceller(link.portName());
+        this.pacing = new ReplyPacing(timing.characterNanos());
+    }
+
+    /** How fast replies arrive on this line, for a hint when the modules talk at another baud rate. */
+    ReplyPacing pacing() {
+        return pacing;
     }
 
     /** How an adapter's echo of each request is handled (default {@link EchoCancellation#AUTO}). */
@@ -136,6 +147,15 @@ final class RtuMaster {
      */
     void onStrayFrame(Consumer<RtuFrame> listener) {
         this.strayListener = listener == null ? frame -> { } : listener;
+    }
+
+    /**
+     * Who hears of addresses whose exchange was disturbed: the address asked when a corrupted or cut-short reply
+     * came, and the address byte of bytes that were no whole frame (perhaps a late reply that was cut). Bus
+     * exploration asks them again, so that a module is not lost to noise.
+     */
+    void onDisturbance(java.util.function.IntConsumer listener) {
+        this.disturbanceListener = listener == null ? address -> { } : listener;
     }
 
     /**
@@ -289,7 +309,12 @@ final class RtuMaster {
                 }
                 int n = link.read(buffer, have, buffer.length - have, millisAtLeastOne(wait));
                 if (n > 0) {
+                    if (have == 0) {
+                        firstByteAt = System.nanoTime();
+                        reads = 0;
+                    }
                     have += n;
+                    reads++;
                     lineQuietSince = System.nanoTime();
                 }
                 int stripped = echo.strip(buffer, have, n == 0);
@@ -316,11 +341,13 @@ final class RtuMaster {
                     continue;
                 }
                 if (!Crc16.isValidFrame(buffer, frameLength)) {
-                    return corrupt(address, frameLength, "CRC error");
+                    return corrupt(address, have, "CRC error");
                 }
                 RtuFrame frame = RtuFrame.decode(buffer, frameLength);
+                pacing.frameReceived(frameLength, reads, lineQuietSince - firstByteAt);
                 have -= frameLength;
                 System.arraycopy(buffer, frameLength, buffer, 0, have);
+                firstByteAt = lineQuietSince;
                 if (frame.address() != address) {
                     if (answersRequest && suspect == null && answersUnowed(frame, request)) {
                         suspect = frame; // decided when our own reply comes or does not
@@ -330,7 +357,7 @@ final class RtuMaster {
                     continue;
                 }
                 if (have > 0) {
-                    skipUntilSilence(); // noise behind our reply
+                    salvage(readUntilSilence(have)); // behind our reply: noise, or a late reply of another
                 }
                 return classify(address, request, frame.pdu());
             }
@@ -382,11 +409,72 @@ final class RtuMaster {
                 + code + " (" + ExceptionCodes.name(code) + ")", requested, code);
     }
 
-    private Reply corrupt(int address, int length, String what) throws IOException {
+    /**
+     * A reply that is no valid frame: read on to the next silence, then look through everything for whole frames
+     * (a late reply from another module may be among the bytes) and report who may have been cut short, so that a
+     * scan can ask those addresses again instead of losing them.
+     */
+    private Reply corrupt(int address, int have, String what) throws IOException {
         crcErrors.incrementAndGet();
-        LOG.debug("{}: corrupted reply ({}): {}", describe.apply(address), what, RtuFrame.hex(buffer, length));
-        skipUntilSilence();
+        int total = readUntilSilence(have);
+        LOG.debug("{}: corrupted reply ({}): {}", describe.apply(address), what, RtuFrame.hex(buffer, total));
+        if (address > 0) {
+            disturbed(address);
+        }
+        salvage(total);
         return Reply.CORRUPT;
+    }
+
+    /** Reads on after {@code have} bytes until the line is silent; returns how many bytes the buffer holds. */
+    private int readUntilSilence(int have) throws IOException {
+        long giveUp = System.nanoTime() + MAX_RESYNC_NANOS;
+        int total = have;
+        byte[] scratch = new byte[RtuFrame.MAX_LENGTH];
+        int n;
+        while (System.nanoTime() < giveUp
+                && (n = link.read(scratch, 0, scratch.length, millisAtLeastOne(interByteNanos))) > 0) {
+            int keep = Math.min(n, buffer.length - total);
+            System.arraycopy(scratch, 0, buffer, total, keep);
+            total += keep;
+            lineQuietSince = System.nanoTime();
+        }
+        return total;
+    }
+
+    /**
+     * Finds whole frames among {@code have} bytes that failed as one (resynchronising byte by byte, with the
+     * lengths of replies to the last request) and reports them as stray frames; the address byte of each piece
+     * that is no frame goes to the disturbance listener.
+     */
+    private void salvage(int have) {
+        FrameLength lengths = lastSent == null ? null
+                : FrameLengths.responseTo(Arrays.copyOfRange(lastSent, 1, lastSent.length - 2));
+        int start = 0;
+        boolean pieceReported = false;
+        while (start + 4 <= have) {
+            int address = buffer[start] & 0xFF;
+            if (lengths != null && address >= 1 && address <= 247) {
+                byte[] rest = Arrays.copyOfRange(buffer, start, have);
+                int length = lengths.of(rest, rest.length);
+                if (length >= 4 && length <= rest.length && Crc16.isValidFrame(rest, length)) {
+                    stray(RtuFrame.decode(rest, length));
+                    start += length;
+                    pieceReported = false;
+                    continue;
+                }
+                if (!pieceReported) {
+                    disturbed(address); // perhaps the start of a reply that was cut
+                    pieceReported = true;
+                }
+            }
+            start++;
+        }
+    }
+
+    private void disturbed(int address) {
+        if (address >= 1 && address <= 247) {
+            disturbanceListener.accept(address);
+        }
     }
 
     private void settlePending() {
@@ -477,7 +565,8 @@ final class RtuMaster {
         } else if (Crc16.isValidFrame(buffer, have)) {
             stray(RtuFrame.decode(buffer, have));
         } else {
-            LOG.debug("dropped {} stale bytes on {}: {}", have, link.portName(), RtuFrame.hex(buffer, have));
+            LOG.debug("stale bytes on {}: {}", link.portName(), RtuFrame.hex(buffer, have));
+            salvage(have);
         }
         lineQuietSince = System.nanoTime();
     }

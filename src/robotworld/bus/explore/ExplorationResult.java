@@ -3,6 +3,7 @@ package robotworld.bus.explore;
 import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalInt;
 import robotworld.bus.BusStatistics;
 import robotworld.description.RobotDescriptionDocument;
 
@@ -16,9 +17,12 @@ import robotworld.description.RobotDescriptionDocument;
  * @param notes remarks that are not problems (e.g. a port name the description cannot carry)
  * @param elapsed how long the exploration took
  * @param statistics bus counters of the exploration
+ * @param suggestedBaud when replies looked like a baud-rate mismatch and their pace named a rate, that rate
+ * @param baudMismatch whether replies looked like a baud-rate mismatch (garbled, or paced at another rate)
  */
 public record ExplorationResult(Optional<RobotDescriptionDocument> description, List<FoundModule> modules,
-        List<AddressProblem> problems, List<String> notes, Duration elapsed, BusStatistics statistics) {
+        List<AddressProblem> problems, List<String> notes, Duration elapsed, BusStatistics statistics,
+        OptionalInt suggestedBaud, boolean baudMismatch) {
 
     public ExplorationResult {
         modules = List.copyOf(modules);

@@ -5,6 +5,8 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalInt;
+import java.util.OptionalLong;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Pattern;
@@ -40,6 +42,8 @@ public final class RobotExplorer {
 
     /** After this many link failures in a row the link is taken as gone and the scan stops. */
     private static final int LINK_FAILURES_TO_GIVE_UP = 3;
+    /** Rounds of asking again after the scan (each round may bring late replies of the one before to light). */
+    private static final int MAX_ASK_AGAIN_ROUNDS = 4;
     private static final Pattern VERSION = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._\\-]{0,31}");
 
     private final RS485Bus bus;
@@ -85,9 +89,15 @@ public final class RobotExplorer {
         long started = System.nanoTime();
         Scan scan = new Scan(listener);
         Set<Integer> late = new TreeSet<>();
+        Set<Integer> disturbed = new TreeSet<>();
         bus.onStrayFrame(frame -> {
             if (frame.address() >= firstAddress && frame.address() <= lastAddress) {
                 late.add(frame.address());
+            }
+        });
+        bus.onDisturbance(address -> {
+            if (address >= firstAddress && address <= lastAddress) {
+                disturbed.add(address);
             }
         });
         try {
@@ -98,14 +108,32 @@ public final class RobotExplorer {
             }
             if (!scan.linkGone()) {
                 bus.listenForStrays(bus.timing().responseTimeout());
-                for (int address : new ArrayList<>(late)) {
-                    scan.askAgain(address);
-                }
+                askAgainUntilSettled(scan, late, disturbed);
             }
         } finally {
             bus.onStrayFrame(null);
+            bus.onDisturbance(null);
         }
         return scan.result(robotName, Duration.ofNanos(System.nanoTime() - started));
+    }
+
+    /**
+     * Asks again, with the normal timeout, every address that answered late (a failure there is reported) and
+     * every address whose exchange was disturbed (silence there means nobody), round after round while asking
+     * brings new late replies or disturbances to light.
+     */
+    private void askAgainUntilSettled(Scan scan, Set<Integer> late, Set<Integer> disturbed) {
+        for (int round = 0; round < MAX_ASK_AGAIN_ROUNDS && !scan.linkGone(); round++) {
+            Set<Integer> todo = new TreeSet<>(late);
+            todo.addAll(disturbed);
+            todo.removeIf(scan::settled);
+            if (todo.isEmpty()) {
+                return;
+            }
+            for (int address : todo) {
+                scan.askAgain(address, late.contains(address));
+            }
+        }
     }
 
     /** The state of one exploration run. */
@@ -146,15 +174,31 @@ public final class RobotExplorer {
             }
         }
 
-        /** A late responder, asked again with the normal timeout and retries. */
-        void askAgain(int address) {
+        boolean settled(int address) {
+            return settled.contains(address);
+        }
+
+        /**
+         * An address asked again with the normal timeout.
+         *
+         * @param answered whether it was heard (a late reply): then silence is reported, else it means nobody
+         */
+        void askAgain(int address, boolean answered) {
             if (settled.contains(address)) {
                 return;
             }
-            settled.add(address);
             try {
-                check(address, bus.identify(address));
+                // a module heard late gets every retry; an address only disturbed, one ask (silence: nobody there)
+                DeviceIdentification identity = answered ? bus.identify(address) : bus.reprobe(address);
+                settled.add(address);
+                check(address, identity);
+            } catch (BusTimeoutException e) {
+                if (answered) {
+                    settled.add(address);
+                    fail(address, e);
+                }
             } catch (BusException e) {
+                settled.add(address);
                 fail(address, e);
             }
         }
@@ -276,7 +320,21 @@ public final class RobotExplorer {
                 description = Optional.of(RobotDescriptionBuilder.build(robotName, host, port, modules,
                         order.stream().map(details::get).toList(), order.stream().map(docRefs::get).toList()));
             }
-            return new ExplorationResult(description, modules, problems, notes, elapsed, bus.statistics());
+            OptionalLong paced = bus.replyPacing().slowerLineBaud(bus.settings().bitsPerCharacter());
+            long garbled = problems.stream().filter(p -> p.kind() == AddressProblem.Kind.CRC_ERROR).count();
+            boolean mismatch = paced.isPresent() || garbled >= 2
+                    || (modules.isEmpty() && bus.statistics().crcErrors() >= 3);
+            if (paced.isPresent()) {
+                notes.add("replies arrive at about " + paced.getAsLong() + " baud, not " + bus.settings().baudRate()
+                        + ": if the modules talk at " + paced.getAsLong() + " baud, explore with --baud "
+                        + paced.getAsLong() + " (or --baud auto)");
+            } else if (mismatch) {
+                notes.add("replies were garbled (" + bus.statistics().crcErrors() + " corrupted): this looks like a"
+                        + " baud-rate mismatch; check the modules' line speed and --baud (or try --baud auto)");
+            }
+            OptionalInt suggested = paced.isPresent() ? OptionalInt.of((int) paced.getAsLong()) : OptionalInt.empty();
+            return new ExplorationResult(description, modules, problems, notes, elapsed, bus.statistics(), suggested,
+                    mismatch);
         }
     }
 }

@@ -18,6 +18,7 @@ import robotworld.bus.InvalidPortNameException;
 import robotworld.bus.RS485Bus;
 import robotworld.bus.SerialSettings;
 import robotworld.bus.explore.AddressProblem;
+import robotworld.bus.explore.BaudRateSearch;
 import robotworld.bus.explore.ExplorationListener;
 import robotworld.bus.explore.ExplorationResult;
 import robotworld.bus.explore.FoundModule;
@@ -56,8 +57,11 @@ final class ExploreCommand implements Callable<Integer> {
             description = "<Host> of the robot, the computer that runs its program (default: this computer's name)")
     private String host;
 
-    @Option(names = "--baud", paramLabel = "BAUD", defaultValue = "115200",
-            description = "line speed of a serial device (default: ${DEFAULT-VALUE}); also sets the scan timing")
+    @Option(names = "--baud", paramLabel = "BAUD|auto", defaultValue = "115200",
+            description = "line speed of a serial device (default: ${DEFAULT-VALUE}); also sets the scan timing; "
+                    + "auto tries the common rates until one gives a clean result")
+    private String baudText;
+
     private int baud;
 
     @Option(names = "--timeout", paramLabel = "MS", defaultValue = "100",
@@ -91,10 +95,19 @@ final class ExploreCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         PrintWriter stdout = spec.commandLine().getOut();
         PrintWriter stderr = spec.commandLine().getErr();
+        boolean autoBaud = baudText.equalsIgnoreCase("auto");
+        try {
+            baud = autoBaud ? RS485Bus.DEFAULT_BAUD : Integer.parseInt(baudText);
+        } catch (NumberFormatException e) {
+            throw new ParameterException(spec.commandLine(), "--baud must be a number or auto, not '" + baudText + "'");
+        }
         BusTiming timing = timing();
         Path folder = descriptions != null ? descriptions : defaultDescriptions();
         if (!Files.isDirectory(folder)) {
             throw new ParameterException(spec.commandLine(), "module descriptions folder " + folder + " does not exist");
+        }
+        if (autoBaud) {
+            return exploreAtEveryRate(folder, timing, stdout, stderr);
         }
         RS485Bus bus;
         try {
@@ -133,6 +146,36 @@ final class ExploreCommand implements Callable<Integer> {
             }
             return report(result, explorer.addressCount(), stdout, stderr);
         }
+    }
+
+    /** {@code --baud auto}: one exploration per common rate until one is clean. */
+    private int exploreAtEveryRate(Path folder, BusTiming timing, PrintWriter stdout, PrintWriter stderr)
+            throws IOException {
+        EchoCancellation echoMode;
+        try {
+            echoMode = EchoCancellation.parse(echo);
+            robotworld.bus.PortName.parse(port);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        String robotHost = host != null ? host : localHostName();
+        BaudRateSearch.Outcome outcome;
+        try {
+            outcome = BaudRateSearch.explore(rate -> new RS485Bus(port, SerialSettings.eightNoneOne(rate), timing)
+                    .echoCancellation(echoMode), bus -> {
+                        stderr.println("exploring " + bus + ", addresses " + from + ".." + to);
+                        return new RobotExplorer(bus, new ModuleCatalog(folder)).addresses(from, to).host(robotHost);
+                    }, name, new ExplorationListener() { }, line -> stderr.println("--baud auto: " + line));
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        } catch (DescriptionException e) {
+            for (DescriptionError error : e.errors()) {
+                stderr.println("rwe: " + error.message());
+            }
+            return 1;
+        }
+        stdout.println("baud rate " + outcome.baud() + " (tried " + outcome.tried() + ")");
+        return report(outcome.result(), to - from + 1, stdout, stderr);
     }
 
     private int report(ExplorationResult result, int scanned, PrintWriter stdout, PrintWriter stderr)

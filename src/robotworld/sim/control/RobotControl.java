@@ -36,6 +36,7 @@ public final class RobotControl implements ControlCommands {
                 "fail ADDRESS silent|stopped|none   the module stops answering / reports 'not running' / is well",
                 "fail ADDRESS crc RATE | corrupt N | refuse CODE | mute FUNCTION | answer-as ADDRESS   other faults",
                 "slow ADDRESS MS   every reply of the module comes MS later (0: on time)",
+                "trickle ADDRESS MS   the module sends its replies one byte every MS (0: as the line goes)",
                 "echo on|off   the line echoes each request to the master, as an adapter without echo suppression");
     }
 
@@ -92,6 +93,12 @@ public final class RobotControl implements ControlCommands {
                 }
                 return fail(faults(words.get(1)), words.get(1), words.subList(2, words.size()));
             }
+            case "trickle" -> {
+                arguments(words, 2, "trickle ADDRESS MS");
+                int millis = number(words.get(2), 0, 1_000, "gap (ms)");
+                faults(words.get(1)).trickle(Duration.ofMillis(millis));
+                return "address " + words.get(1) + " sends one byte every " + millis + " ms";
+            }
             case "echo" -> {
                 arguments(words, 1, "echo on|off");
                 boolean on = onOff(words.get(1));
@@ -109,7 +116,7 @@ public final class RobotControl implements ControlCommands {
                 case "silent" -> faults.silent(true);
                 case "stopped" -> faults.stopped(true);
                 case "none" -> faults.silent(false).stopped(false).crcErrorRate(0).corruptNextReplies(0).refuseWith(0)
-                        .replyDelay(Duration.ZERO).unmuteAll().answerAs(0);
+                        .replyDelay(Duration.ZERO).trickle(Duration.ZERO).unmuteAll().answerAs(0);
                 default -> throw new IllegalArgumentException("'" + kind + "' is not a fault: silent, stopped, none, "
                         + "crc RATE, corrupt N, refuse CODE, mute FUNCTION, answer-as ADDRESS");
             }

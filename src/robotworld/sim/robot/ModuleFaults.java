@@ -15,6 +15,7 @@ public final class ModuleFaults {
     private volatile boolean silent;
     private volatile double crcErrorRate;
     private volatile Duration replyDelay = Duration.ZERO;
+    private volatile Duration trickle = Duration.ZERO;
     private volatile int refuseWith;
     private volatile boolean stopped;
     private volatile int answerAs;
@@ -53,6 +54,19 @@ public final class ModuleFaults {
         }
         replyDelay = delay;
         return this;
+    }
+
+    /** Sends replies one byte at a time, this far apart (a slow gateway or a busy module); zero = as the line goes. */
+    public ModuleFaults trickle(Duration perByte) {
+        if (perByte.isNegative()) {
+            throw new IllegalArgumentException("trickle must not be negative, was " + perByte);
+        }
+        trickle = perByte;
+        return this;
+    }
+
+    public Duration trickle() {
+        return trickle;
     }
 
     /** Refuses every request with this Modbus exception code (0 = answer normally). */

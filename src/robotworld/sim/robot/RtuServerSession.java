@@ -140,10 +140,17 @@ final class RtuServerSession implements Runnable {
             start = requestEnd + rtu.t35Nanos();
         }
         start += module.faults().replyDelay().toNanos();
-        send(reply, start);
+        send(reply, start, module.faults().trickle().toNanos());
     }
 
-    private void send(byte[] reply, long start) throws IOException {
+    private void send(byte[] reply, long start, long trickleNanos) throws IOException {
+        if (trickleNanos > 0) {
+            for (int i = 0; i < reply.length; i++) {
+                sleepUntil(start + i * trickleNanos);
+                link.write(reply[i] & 0xFF);
+            }
+            return;
+        }
         if (timing == LineTiming.FAST) {
             sleepUntil(start);
             link.write(reply);
