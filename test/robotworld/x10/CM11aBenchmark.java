@@ -11,7 +11,8 @@ import robotworld.x10.Cm11aRig.Transport;
 
 /**
  * How long CM11A commands take end to end against the simulated interface at real timing, compared with the
- * protocol minimum: every character at 4800 baud 8N1 plus the configured power-line time per frame. The
+ * protocol minimum: every character at 4800 baud 8N1, the configured power-line time per frame, and the quiet the
+ * controller keeps after each 0x55 before the next frame (80 ms by default, as the reference client). The
  * difference is what the driver, the simulator, the operating system and the transport add; target ≤ 5 ms.
  *
  * <p>Run with {@code ./antw bench-x10}. System properties: {@code bench.powerLineMs} (default 100),
@@ -46,8 +47,10 @@ public final class CM11aBenchmark {
                 new Case("status request", 15, 0, CM11aController::requestStatus));
 
         System.out.printf(Locale.ROOT, "CM11A command timing against the protocol minimum%n");
-        System.out.printf(Locale.ROOT, "serial: 4800 baud 8N1 = %.3f ms per character; power line: %d ms per frame%n",
-                CHARACTER_MS, powerLineMs);
+        long pauseMs = CM11aConfig.defaults().pauseAfterReady().toMillis();
+        System.out.printf(Locale.ROOT, "serial: 4800 baud 8N1 = %.3f ms per character; power line: %d ms per frame; "
+                + "%d ms quiet after each 0x55 (commands back to back, so every frame follows one)%n", CHARACTER_MS,
+                powerLineMs, pauseMs);
         System.out.printf(Locale.ROOT, "%d runs x %d commands per case; median per run, then median of the runs%n%n",
                 runs, perRun);
         System.out.printf(Locale.ROOT, "%-9s %-16s %5s %6s %11s %10s %12s %7s  %s%n", "transport", "command",
@@ -58,7 +61,7 @@ public final class CM11aBenchmark {
                     "A1=lamp,A3=appliance");
             try (Cm11aRig rig = Cm11aRig.connect(transport, sim, CM11aConfig.defaults())) {
                 for (Case c : cases) {
-                    met &= measure(transport, c, rig.controller, powerLineMs, runs, perRun);
+                    met &= measure(transport, c, rig.controller, powerLineMs + pauseMs, runs, perRun);
                 }
             }
         }
@@ -67,7 +70,8 @@ public final class CM11aBenchmark {
         System.exit(met ? 0 : 1);
     }
 
-    private static boolean measure(Transport transport, Case c, CM11aController controller, long powerLineMs,
+    /** @param frameMs power-line time plus the quiet after 0x55, per frame */
+    private static boolean measure(Transport transport, Case c, CM11aController controller, long frameMs,
             int runs, int perRun) {
         for (int i = 0; i < 3; i++) {
             c.command().run(controller); // warm up the JIT and the connection
@@ -82,7 +86,7 @@ public final class CM11aBenchmark {
             }
             runMedians.add(median(times));
         }
-        double minimum = c.characters() * CHARACTER_MS + c.frames() * powerLineMs;
+        double minimum = c.characters() * CHARACTER_MS + c.frames() * frameMs;
         double median = median(runMedians);
         double overhead = median - minimum;
         StringBuilder perRunText = new StringBuilder();
