@@ -151,7 +151,7 @@
   <xsl:template name="participant-summary">
     <xsl:value-of select="if ($self/self::rw:RobotDescription) then 'Robot ' else 'Environment '"/>
     <xsl:value-of select="gen:comment($participant)"/>
-    <xsl:text> (host </xsl:text><xsl:value-of select="gen:comment($self/rw:Host)"/><xsl:text>) of the RobotWorld </xsl:text>
+    <xsl:text> (host </xsl:text><xsl:value-of select="gen:comment(gen:host($self/rw:Host))"/><xsl:text>) of the RobotWorld </xsl:text>
     <xsl:value-of select="gen:comment($world/rw:WorldName)"/><xsl:text>.</xsl:text>
   </xsl:template>
 
@@ -161,7 +161,7 @@
   </xsl:template>
 
   <xsl:template name="space-constants">
-    <xsl:param name="host" as="xs:string?" select="string($self/rw:Host)"/>
+    <xsl:param name="host" as="xs:string?" select="if ($self/rw:Host) then gen:host($self/rw:Host) else ()"/>
     <xsl:text>    /** The space from the description; override with -Drwe.space.url=... or RWE_SPACE_URL. */&#10;</xsl:text>
     <xsl:text>    public static final String SPACE_URL = </xsl:text>
     <xsl:value-of select="if ($world/rw:SpaceURL) then gen:java-string($world/rw:SpaceURL) else 'null'"/>

@@ -3,7 +3,9 @@ package robotworld.description;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.UnsupportedEncodingException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -78,13 +80,17 @@ public final class DescriptionLoader {
         try {
             long size = Files.size(file);
             if (size > MAX_BYTES) {
-                throw failure(source, 0, 0, "file is " + size + " bytes; descriptions are limited to "
-                        + MAX_BYTES + " bytes");
+                throw failure(source, 1, 1, tooLarge(size + " bytes"));
             }
             bytes = Files.readAllBytes(file);
         } catch (NoSuchFileException e) {
             throw failure(source, 0, 0, "no such file");
+        } catch (AccessDeniedException e) {
+            throw failure(source, 0, 0, "not allowed to read this file (check its permissions)");
         } catch (IOException e) {
+            if (Files.isDirectory(file)) {
+                throw failure(source, 0, 0, "is a directory, not a description file");
+            }
             throw failure(source, 0, 0, "cannot read: " + e.getMessage());
         }
         return parseAndCheck(bytes, source, expected, schemas);
@@ -100,7 +106,7 @@ public final class DescriptionLoader {
             throw failure(sourceName, 0, 0, "cannot read: " + e.getMessage());
         }
         if (bytes.length > MAX_BYTES) {
-            throw failure(sourceName, 0, 0, "input exceeds " + MAX_BYTES + " bytes");
+            throw failure(sourceName, 1, 1, tooLarge("more than " + MAX_BYTES + " bytes"));
         }
         return parseAndCheck(bytes, sourceName, expected, DescriptionSchemas.configured());
     }
@@ -142,11 +148,14 @@ public final class DescriptionLoader {
     private static void check(XmlObject document, String source, List<XmlError> schemaErrors)
             throws DescriptionException {
         List<DescriptionError> errors = new ArrayList<>(schemaErrors.size());
+        List<String> cascadeKeys = new ArrayList<>(schemaErrors.size());
         for (XmlError error : schemaErrors) {
+            ErrorMessages.Described described = ErrorMessages.schemaError(error);
             errors.add(new DescriptionError(source, Math.max(error.getLine(), 0), Math.max(error.getColumn(), 0),
-                    ErrorMessages.schemaMessage(error.getMessage())));
+                    described.message()));
+            cascadeKeys.add(described.cascadeKey());
         }
-        errors = ErrorMessages.withoutCascades(errors);
+        errors = ErrorMessages.withoutCascades(errors, cascadeKeys);
         if (errors.isEmpty()) {
             errors = DescriptionRules.check(document, source);
         }
@@ -164,9 +173,26 @@ public final class DescriptionLoader {
             return XmlObject.Factory.parse(new ByteArrayInputStream(bytes), options);
         } catch (XmlException e) {
             throw new DescriptionException(parseErrors(e, source));
+        } catch (UnsupportedEncodingException e) {
+            throw failure(source, 1, encodingColumn(bytes), "unknown character encoding '" + e.getMessage()
+                    + "' in the XML declaration; save the file as UTF-8 (encoding=\"UTF-8\")");
         } catch (IOException e) {
-            throw failure(source, 0, 0, "cannot read: " + e.getMessage());
+            throw failure(source, 1, 1, "cannot read: " + e.getMessage());
         }
+    }
+
+    private static String tooLarge(String size) {
+        return "the file is " + size + "; a description may be at most 4 MiB (" + MAX_BYTES + " bytes)";
+    }
+
+    /** The column of {@code encoding} in the XML declaration on the first line, else 1. */
+    private static int encodingColumn(byte[] bytes) {
+        int end = 0;
+        while (end < bytes.length && end < 200 && bytes[end] != '\n') {
+            end++;
+        }
+        int at = new String(bytes, 0, end, StandardCharsets.ISO_8859_1).indexOf("encoding");
+        return at < 0 ? 1 : at + 1;
     }
 
     private static List<DescriptionError> parseErrors(XmlException e, String source) {

@@ -1,37 +1,34 @@
 package robotworld.description;
 
+import java.lang.reflect.Constructor;
+import java.lang.reflect.Modifier;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
-import java.util.Set;
+import org.apache.xmlbeans.XmlCursor;
 import org.apache.xmlbeans.XmlObject;
 
 /**
- * The rules a schema cannot express, checked after schema validation:
+ * The rules a schema cannot express, checked after schema validation. Together with the schema they promise
+ * that a world that validates generates a project that compiles, for every viewpoint:
  * <ul>
- *   <li>names that become Java identifiers are not Java keywords and do not shadow classes the generated code
- *       uses;</li>
- *   <li>participant names are unique in a world, module names unique in a participant, and the space container
- *       names built from them ({@code <Participant><Module>REQUEST}) are unique;</li>
+ *   <li>names that become Java classes, fields or packages are neither keywords nor hide a class or variable the
+ *       generated code uses ({@link JavaNames});</li>
+ *   <li>participant names are unique in a world (also ignoring case: they are file names), module names unique in
+ *       a participant, and the space container names built from them ({@code <Participant><Module>REQUEST}) are
+ *       unique;</li>
  *   <li>bus addresses (NodeNumber) are unique on each bus;</li>
- *   <li>an environment with robot-bus modules names the bus port and the bus class.</li>
+ *   <li>an environment with robot-bus modules names the bus port and the bus class, and a {@code TalkToBusClass}
+ *       is a bus class on the class path that the module proxies accept;</li>
+ *   <li>no text carries invisible control characters (bidirectional overrides and the like), which could make
+ *       generated code read differently from how it compiles.</li>
  * </ul>
  */
 final class DescriptionRules {
 
-    /** Class names the generated code refers to; a participant class of the same name would shadow them. */
-    private static final Set<String> RESERVED_CLASS_NAMES = Set.of(
-            "Object", "String", "System", "Thread", "Math", "Exception", "RuntimeException", "Integer", "Long",
-            "Double", "Boolean", "Runtime", "Override", "InterruptedException",
-            "MotorModule", "ServoModule", "BumperModule", "IRDistanceModule", "X10LampModule",
-            "X10ApplianceModule", "RS485Bus");
-
-    /** Generated code names module fields <Class><n>, e.g. MotorModule1. */
-    private static final java.util.regex.Pattern GENERATED_FIELD_NAME =
-            java.util.regex.Pattern.compile("[A-Za-z0-9_]*Module[0-9]+");
-
-    private static final Set<String> GENERATED_CONSTANTS = Set.of("NAME", "HOST", "SPACE_URL");
+    private static final String DEFAULT_BUS_PACKAGE = "robotworld.bus.";
 
     private final String source;
     private final List<DescriptionError> errors = new ArrayList<>();
@@ -49,32 +46,68 @@ final class DescriptionRules {
         } else if (document instanceof EnvironmentDocument environment) {
             rules.checkEnvironment(environment.getEnvironment());
         }
+        rules.invisibleCharacters(document);
         return rules.errors;
     }
 
     private void checkWorld(RobotWorldType world) {
-        identifier(world.xgetWorldName(), world.getWorldName(), "world name");
+        String worldName = world.getWorldName();
+        if (JavaNames.isReserved(worldName)) {
+            error(world.xgetWorldName(), "world name '" + worldName + "' is a Java keyword; choose another name");
+        }
         if (world.isSetPackageName()) {
-            for (String segment : world.getPackageName().split("\\.")) {
-                if (JavaNames.isReserved(segment)) {
-                    error(world.xgetPackageName(), "package name '" + world.getPackageName()
-                            + "' contains the Java keyword '" + segment + "'");
-                }
+            String problem = JavaNames.problemWithPackageName(world.getPackageName());
+            if (problem != null) {
+                error(world.xgetPackageName(), "package name '" + world.getPackageName() + "' " + problem
+                        + "; choose another package name");
+            }
+        } else if (!JavaNames.isReserved(worldName)) {
+            String packageName = JavaNames.defaultPackageName(worldName);
+            String problem = JavaNames.problemWithPackageName(packageName);
+            if (problem != null) {
+                error(world.xgetWorldName(), "world name '" + worldName + "' gives the package name '" + packageName
+                        + "', which " + problem + "; add a <PackageName> or choose another world name");
             }
         }
         Map<String, XmlObject> participants = new HashMap<>();
+        Map<String, XmlObject> participantsIgnoringCase = new HashMap<>();
         Map<String, ContainerOwner> containers = new HashMap<>();
+        List<String> busPackageRoots = new ArrayList<>();
         for (EnvModuleListType environment : world.getEnvironmentArray()) {
-            unique(participants, environment.getEnvironmentName(), environment.xgetEnvironmentName(),
-                    "participant name", "this world");
+            participant(participants, participantsIgnoringCase, environment.getEnvironmentName(),
+                    environment.xgetEnvironmentName());
             checkEnvironment(environment);
             containerNames(containers, environment.getEnvironmentName(), environment.getX10ModuleArray());
             containerNames(containers, environment.getEnvironmentName(), environment.getModuleArray());
+            if (environment.sizeOfModuleArray() > 0 && environment.isSetTalkToBusClass()) {
+                busPackageRoots.add(environment.getTalkToBusClass());
+            }
         }
         for (ModuleListType robot : world.getRobotDescriptionArray()) {
-            unique(participants, robot.getRobotName(), robot.xgetRobotName(), "participant name", "this world");
+            participant(participants, participantsIgnoringCase, robot.getRobotName(), robot.xgetRobotName());
             checkRobot(robot);
             containerNames(containers, robot.getRobotName(), robot.getModuleArray());
+            busPackageRoots.add(robot.getTalkToBusClass());
+        }
+        // generated code writes a qualified bus class in full: a participant named like its first segment hides it
+        for (String busClass : busPackageRoots) {
+            int dot = busClass.indexOf('.');
+            XmlObject clash = dot > 0 ? participants.get(busClass.substring(0, dot)) : null;
+            if (clash != null) {
+                error(clash, "participant name '" + busClass.substring(0, dot) + "' would hide the package of the"
+                        + " bus class " + busClass + " in generated code; choose another name");
+            }
+        }
+    }
+
+    private void participant(Map<String, XmlObject> seen, Map<String, XmlObject> seenIgnoringCase, String name,
+                             XmlObject at) {
+        boolean fresh = unique(seen, name, at, "participant name", "this world");
+        XmlObject sameLetters = seenIgnoringCase.putIfAbsent(name.toLowerCase(Locale.ROOT), at);
+        if (fresh && sameLetters != null) {
+            error(at, "participant name '" + name + "' differs only in case from the one at line "
+                    + SourcePositions.of(sameLetters)[0] + "; their classes would be the same file on Windows and"
+                    + " macOS, choose another name");
         }
     }
 
@@ -82,6 +115,7 @@ final class DescriptionRules {
         participantName(robot.xgetRobotName(), robot.getRobotName());
         moduleNames(robot.getModuleArray(), robot.getRobotName());
         busAddresses(robot.getModuleArray(), robot.getRobotName());
+        busClass(robot.xgetTalkToBusClass(), robot.getTalkToBusClass(), robot.getModuleArray());
     }
 
     private void checkEnvironment(EnvModuleListType environment) {
@@ -99,25 +133,87 @@ final class DescriptionRules {
                 error(busModules[0], "environment '" + name + "' has robot-bus modules but no <TalkToBusClass>");
             }
         }
+        if (environment.isSetTalkToBusClass()) {
+            busClass(environment.xgetTalkToBusClass(), environment.getTalkToBusClass(), busModules);
+        }
         busAddresses(busModules, name);
     }
 
     private void participantName(XmlObject at, String name) {
-        identifier(at, name, "participant name");
-        if (GENERATED_FIELD_NAME.matcher(name).matches() || GENERATED_CONSTANTS.contains(name)) {
-            error(at, "participant name '" + name + "' has the form of a generated field name (<Class><n>,"
-                    + " NAME, HOST, SPACE_URL); choose another name");
-        }
-        if (RESERVED_CLASS_NAMES.contains(name)) {
-            error(at, "participant name '" + name + "' would hide the class " + name
-                    + " in generated code; choose another name");
+        String problem = JavaNames.problemWithParticipantName(name);
+        if (problem != null) {
+            error(at, "participant name '" + name + "' " + problem + "; choose another name");
         }
     }
 
-    private void identifier(XmlObject at, String name, String what) {
-        if (JavaNames.isReserved(name)) {
-            error(at, what + " '" + name + "' is a Java keyword and cannot name a class or package");
+    /**
+     * The bus class as generated code names it ({@code robotworld.bus.<name>} unless qualified) must exist, open
+     * a port given by name, close, and be what each bus module's hardware proxy
+     * ({@code robotworld.bus.<Class>Proxy}) takes.
+     */
+    private void busClass(XmlObject at, String name, ModuleType[] modules) {
+        for (String segment : name.split("\\.")) {
+            if (JavaNames.isReserved(segment)) {
+                error(at, "TalkToBusClass '" + name + "' contains the Java keyword '" + segment
+                        + "'; the bus class is RS485Bus");
+                return;
+            }
         }
+        if (modules.length == 0) {
+            return; // not used by generated code
+        }
+        String qualified = name.contains(".") ? name : DEFAULT_BUS_PACKAGE + name;
+        Class<?> bus = load(qualified);
+        if (bus == null) {
+            error(at, "TalkToBusClass '" + name + "' is not a bus class RobotWorldExplorer knows (no class "
+                    + qualified + " on the class path); the bus class is RS485Bus");
+            return;
+        }
+        if (!Modifier.isPublic(bus.getModifiers()) || Modifier.isAbstract(bus.getModifiers())
+                || !AutoCloseable.class.isAssignableFrom(bus) || publicConstructor(bus, String.class) == null) {
+            error(at, "TalkToBusClass '" + name + "' is not a bus class (a public class that opens a port by name"
+                    + " and can be closed); the bus class is RS485Bus");
+            return;
+        }
+        for (ModuleType module : modules) {
+            String moduleClass = ModuleClassName.of(module);
+            Class<?> proxy = load(DEFAULT_BUS_PACKAGE + moduleClass + "Proxy");
+            if (proxy != null && publicConstructor(proxy, bus, int.class, String.class) == null) {
+                error(at, "TalkToBusClass '" + name + "' cannot carry " + moduleClass + " modules (their proxy "
+                        + proxy.getSimpleName() + " needs another bus class); the bus class is RS485Bus");
+                return;
+            }
+        }
+    }
+
+    private static Class<?> load(String className) {
+        ClassLoader loader = Thread.currentThread().getContextClassLoader();
+        if (loader == null) {
+            loader = DescriptionRules.class.getClassLoader();
+        }
+        try {
+            return Class.forName(className, false, loader);
+        } catch (ClassNotFoundException | LinkageError e) {
+            return null;
+        }
+    }
+
+    /** A public constructor that accepts arguments of exactly these types (or their supertypes). */
+    private static Constructor<?> publicConstructor(Class<?> type, Class<?>... arguments) {
+        for (Constructor<?> constructor : type.getConstructors()) {
+            Class<?>[] parameters = constructor.getParameterTypes();
+            if (parameters.length != arguments.length) {
+                continue;
+            }
+            boolean fits = true;
+            for (int i = 0; i < parameters.length; i++) {
+                fits &= parameters[i].isAssignableFrom(arguments[i]);
+            }
+            if (fits) {
+                return constructor;
+            }
+        }
+        return null;
     }
 
     private void moduleNames(XmlObject[] modules, String participant) {
@@ -155,13 +251,74 @@ final class DescriptionRules {
     private record ContainerOwner(String participant, XmlObject module) {
     }
 
-    private void unique(Map<String, XmlObject> seen, String value, XmlObject at, String what, String where) {
+    /**
+     * Control characters, bidirectional overrides and other invisible formatting characters in any text or
+     * attribute value ("Trojan source": text that displays differently from what a compiler reads).
+     */
+    private void invisibleCharacters(XmlObject document) {
+        try (XmlCursor cursor = document.newCursor()) {
+            while (!cursor.toNextToken().isNone()) {
+                XmlCursor.TokenType token = cursor.currentTokenType();
+                if (!token.isText() && !token.isAttr()) {
+                    continue;
+                }
+                String text = token.isText() ? cursor.getChars() : cursor.getTextValue();
+                int offending = firstInvisible(text);
+                if (offending >= 0) {
+                    int c = text.codePointAt(offending);
+                    try (XmlCursor element = cursor.newCursor()) {
+                        element.toParent();
+                        String name = element.getName() == null ? "the text" : "<" + element.getName().getLocalPart() + ">";
+                        error(element.getObject(), name + " contains the invisible character "
+                                + String.format("U+%04X", c) + " (" + describe(c) + "), which can make text read"
+                                + " differently from what it is; remove it");
+                    }
+                }
+            }
+        }
+    }
+
+    /** The index of the first character that may not appear in a description's text, or -1. */
+    static int firstInvisible(String text) {
+        for (int i = 0; i < text.length(); i = text.offsetByCodePoints(i, 1)) {
+            if (isInvisible(text.codePointAt(i))) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * Control characters other than tab and line breaks, line and paragraph separators, unpaired surrogates, and
+     * formatting characters (bidirectional controls among them) other than the zero-width (non-)joiners that
+     * some scripts and emoji need.
+     */
+    static boolean isInvisible(int c) {
+        if (c == '\t' || c == '\n' || c == '\r' || c == 0x200C || c == 0x200D) {
+            return false;
+        }
+        return switch (Character.getType(c)) {
+            case Character.CONTROL, Character.FORMAT, Character.LINE_SEPARATOR, Character.PARAGRAPH_SEPARATOR,
+                 Character.SURROGATE -> true;
+            default -> false;
+        };
+    }
+
+    private static String describe(int c) {
+        String name = Character.getName(c);
+        return name == null ? "a control character" : name.toLowerCase(Locale.ROOT);
+    }
+
+    /** Records a duplicate as an error; true when {@code value} was new. */
+    private boolean unique(Map<String, XmlObject> seen, String value, XmlObject at, String what, String where) {
         XmlObject earlier = seen.putIfAbsent(value, at);
         if (earlier != null) {
             int line = SourcePositions.of(earlier)[0];
             error(at, "duplicate " + what + " '" + value + "' in " + where
                     + (line > 0 ? " (first used at line " + line + ")" : ""));
+            return false;
         }
+        return true;
     }
 
     private void error(XmlObject at, String message) {

@@ -3,41 +3,154 @@ package robotworld.description;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import javax.xml.namespace.QName;
+import org.apache.xmlbeans.XmlAnySimpleType;
+import org.apache.xmlbeans.XmlCursor;
+import org.apache.xmlbeans.XmlError;
+import org.apache.xmlbeans.XmlObject;
+import org.apache.xmlbeans.XmlValidationError;
 
-/** Turns XMLBeans' and the parser's wording into messages a description author can act on. */
+/**
+ * Turns XMLBeans' and the parser's wording into messages a description author can act on: which element, what
+ * it may hold, and what it held ("RobotName: names may contain only letters, digits and _ ...; got 'my robot'").
+ */
 final class ErrorMessages {
 
-    /** What each restricted type accepts, appended to "does not match" / "not a valid enumeration" errors. */
+    /** What each restricted type accepts, in words. */
     private static final Map<String, String> ALLOWED = Map.ofEntries(
-            Map.entry("IdentifierType", "letters, digits and _, not starting with a digit"),
-            Map.entry("QualifiedNameType", "dot-separated Java identifiers"),
-            Map.entry("ModuleNameType", "letters, digits, _ and -, starting with a letter"),
-            Map.entry("NodeIdType", "letters, digits, _ and -"),
-            Map.entry("NodeNumberType", "a bus address 1..247"),
-            Map.entry("HostType", "a host name or IP address"),
-            Map.entry("PortType", "a device such as /dev/ttyUSB0 or COM4, or tcp://host:port"),
-            Map.entry("SpaceUrlType", "http://host:port/path"),
-            Map.entry("HouseCodeType", "one letter A..P"),
-            Map.entry("UnitCodeType", "ONE..SIXTEEN"),
-            Map.entry("CommunicationTypeType", "xvsm or none"),
-            Map.entry("BusModuleClassType", "ServoModule, BumperModule, IRDistanceModule or MotorModule"),
-            Map.entry("X10ModuleClassType", "X10LampModule or X10ApplianceModule"),
-            Map.entry("VersionType", "letters, digits, '.', '_' and '-'"),
-            Map.entry("DocRefType", "a relative path or URL without blanks or quotes"));
+            Map.entry("IdentifierType", "names may contain only letters, digits and _, and may not start with a"
+                    + " digit"),
+            Map.entry("QualifiedNameType", "a Java package or class name is made of letters, digits and _, in"
+                    + " parts joined by dots (like my.robots)"),
+            Map.entry("ModuleNameType", "module names may contain only letters, digits, _ and -, and start with a"
+                    + " letter"),
+            Map.entry("NodeIdType", "a NodeID may contain only letters, digits, _ and -"),
+            Map.entry("NodeNumberType", "a bus address is a number from 1 to 247"),
+            Map.entry("HostType", "a host is a computer's name or IP address (robot-laptop, 192.168.1.20) or a URL"
+                    + " (http://robot-laptop:8080/)"),
+            Map.entry("PortType", "a port is a serial device (/dev/ttyUSB0, COM4) or tcp://host:port"),
+            Map.entry("SpaceUrlType", "the space URL is http://host:port/path (like http://localhost:9876/space)"),
+            Map.entry("HouseCodeType", "an X10 house code is one capital letter from A to P"),
+            Map.entry("UnitCodeType", "an X10 unit code is a number word from ONE to SIXTEEN"),
+            Map.entry("CommunicationTypeType", "the communication type is xvsm or none"),
+            Map.entry("BusModuleClassType", "a bus module's class is one of the bus module classes (MotorModule,"
+                    + " ServoModule, ...)"),
+            Map.entry("X10ModuleClassType", "an X10 module's class is X10LampModule or X10ApplianceModule"),
+            Map.entry("AnyModuleClassType", "a module's class is one of the module classes (MotorModule,"
+                    + " X10LampModule, ...)"),
+            Map.entry("VersionType", "a version may contain only letters, digits, '.', '_' and '-'"),
+            Map.entry("DocRefType", "a DocRef is a relative path or URL without spaces or quotes"),
+            Map.entry("DetailsType", "details are at most 1000 characters of text"));
+
+    /** Types whose message lists the values of the schema in use, after these words. */
+    private static final Map<String, String> ENUMERATED = Map.of(
+            "BusModuleClassType", "a bus module's class is ",
+            "X10ModuleClassType", "an X10 module's class is ");
 
     private static final String NAMESPACE_SUFFIX = " in namespace " + DescriptionKind.NAMESPACE;
+
+    private static final Pattern FOR_TYPE = Pattern.compile(" for (\\w+)$");
 
     private ErrorMessages() {
     }
 
-    static String schemaMessage(String raw) {
-        String message = raw.replace("@" + DescriptionKind.NAMESPACE, "").replace(NAMESPACE_SUFFIX, "");
-        for (Map.Entry<String, String> allowed : ALLOWED.entrySet()) {
-            if (message.endsWith(" for " + allowed.getKey())) {
-                return message + " (expected " + allowed.getValue() + ")";
-            }
+    /** One schema error in words, with what tells a cascade of the same mistake. */
+    record Described(String message, String cascadeKey) {
+    }
+
+    static Described schemaError(XmlError error) {
+        if (error instanceof XmlValidationError validation && validation.getExpectedQNames() != null
+                && !validation.getExpectedQNames().isEmpty() && validation.getFieldQName() != null) {
+            return structure(validation);
         }
-        return message;
+        String raw = plain(error.getMessage());
+        Matcher type = FOR_TYPE.matcher(raw);
+        ElementValue at = elementValue(error);
+        if (type.find() && ENUMERATED.containsKey(type.group(1)) && at != null && !at.choices().isEmpty()) {
+            // the choices of the schemas in use, which may list module classes added at run time
+            return new Described(prefix(at) + ENUMERATED.get(type.group(1)) + oneOf(at.choices()) + got(at), null);
+        }
+        if (type.find(0) && ALLOWED.containsKey(type.group(1))) {
+            return new Described(prefix(at) + ALLOWED.get(type.group(1)) + got(at), null);
+        }
+        if (raw.startsWith("Invalid decimal value") || raw.startsWith("Invalid int value")) {
+            String expected = at != null && at.element().equals("NodeNumber") ? ALLOWED.get("NodeNumberType")
+                    : "a number is expected";
+            return new Described(prefix(at) + expected + got(at), null);
+        }
+        return new Described(prefix(at) + raw, null);
+    }
+
+    /** Errors of the element structure: a missing, misplaced or unknown element. */
+    private static Described structure(XmlValidationError error) {
+        String parent = "<" + error.getFieldQName().getLocalPart() + ">";
+        List<QName> expectedNames = error.getExpectedQNames();
+        String expected = expectedNames.stream().map(q -> "<" + q.getLocalPart() + ">")
+                .collect(Collectors.joining(" or "));
+        String key = expected + " in " + parent;
+        QName offending = error.getOffendingQName();
+        if (offending != null) {
+            return new Described(parent + ": expected " + expected + " here, found <" + offending.getLocalPart()
+                    + ">", key);
+        }
+        return new Described(parent + ": " + expected + " is missing (before the end of " + parent + ")", key);
+    }
+
+    /** Which element held which value, and the values its type allows if it lists them, where XMLBeans tells. */
+    private record ElementValue(String element, String value, List<String> choices) {
+    }
+
+    private static String oneOf(List<String> choices) {
+        if (choices.size() == 1) {
+            return choices.get(0);
+        }
+        return String.join(", ", choices.subList(0, choices.size() - 1)) + " or " + choices.get(choices.size() - 1);
+    }
+
+    private static ElementValue elementValue(XmlError error) {
+        XmlCursor location = error.getCursorLocation();
+        if (location == null) {
+            return null;
+        }
+        try (XmlCursor cursor = location.newCursor()) {
+            if (!cursor.currentTokenType().isStart() && !cursor.toParent()) {
+                return null;
+            }
+            QName name = cursor.getName();
+            if (name == null) {
+                return null;
+            }
+            List<String> choices = new ArrayList<>();
+            XmlObject element = cursor.getObject();
+            XmlAnySimpleType[] values = element == null ? null : element.schemaType().getEnumerationValues();
+            if (values != null) {
+                for (XmlAnySimpleType value : values) {
+                    choices.add(value.getStringValue());
+                }
+            }
+            return new ElementValue(name.getLocalPart(), cursor.getTextValue(), choices);
+        } catch (RuntimeException e) {
+            return null; // the position is only decoration: never fail a report because of it
+        }
+    }
+
+    private static String prefix(ElementValue at) {
+        return at == null ? "" : at.element() + ": ";
+    }
+
+    private static String got(ElementValue at) {
+        if (at == null) {
+            return "";
+        }
+        String value = at.value().strip();
+        return "; got '" + (value.length() > 60 ? value.substring(0, 57) + "..." : value) + "'";
+    }
+
+    private static String plain(String raw) {
+        return raw == null ? "invalid" : raw.replace("@" + DescriptionKind.NAMESPACE, "").replace(NAMESPACE_SUFFIX, "");
     }
 
     static String parserMessage(String raw) {
@@ -57,29 +170,16 @@ final class ErrorMessages {
      * XMLBeans reports a missing or misplaced element once for every following sibling. Keep only the first
      * of such a run: one mistake, one message.
      */
-    static List<DescriptionError> withoutCascades(List<DescriptionError> errors) {
+    static List<DescriptionError> withoutCascades(List<DescriptionError> errors, List<String> cascadeKeys) {
         List<DescriptionError> kept = new ArrayList<>(errors.size());
         String previousRun = null;
-        for (DescriptionError error : errors) {
-            String run = cascadeKey(error.message());
+        for (int i = 0; i < errors.size(); i++) {
+            String run = cascadeKeys.get(i);
             if (run == null || !run.equals(previousRun)) {
-                kept.add(error);
+                kept.add(errors.get(i));
             }
             previousRun = run;
         }
         return kept;
-    }
-
-    /** "Expected element 'X' ... in element P" errors of one run share the expected element and the parent. */
-    private static String cascadeKey(String message) {
-        if (!message.startsWith("Expected element")) {
-            return null;
-        }
-        int expectedEnd = message.indexOf('\'', message.indexOf('\'') + 1);
-        int parent = message.lastIndexOf(" in element ");
-        if (expectedEnd < 0 || parent < 0) {
-            return null;
-        }
-        return message.substring(0, expectedEnd + 1) + message.substring(parent);
     }
 }

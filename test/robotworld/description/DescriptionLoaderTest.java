@@ -60,7 +60,8 @@ class DescriptionLoaderTest {
         java.util.Arrays.fill(filler, (byte) ' ');
         Files.write(huge, filler);
         DescriptionException thrown = assertThrows(DescriptionException.class, () -> DescriptionLoader.loadWorld(huge));
-        assertTrue(thrown.getMessage().contains("limited to"), thrown.getMessage());
+        assertTrue(thrown.getMessage().startsWith(huge + ":1:1: ") && thrown.getMessage().contains("at most 4 MiB"),
+                thrown.getMessage());
         assertThrows(DescriptionException.class,
                 () -> DescriptionLoader.loadWorld(new ByteArrayInputStream(filler), "stream"));
     }

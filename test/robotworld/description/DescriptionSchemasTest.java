@@ -45,8 +45,8 @@ public class DescriptionSchemasTest {
         Path world = worldWith("GripperModule");
         DescriptionException builtIn = assertThrows(DescriptionException.class, () -> DescriptionLoader.loadWorld(
                 world, DescriptionSchemas.builtIn()));
-        assertTrue(builtIn.getMessage().contains("'GripperModule' is not a valid enumeration value"),
-                builtIn.getMessage());
+        assertTrue(builtIn.getMessage().contains("Class: a bus module's class is ServoModule, BumperModule,"
+                + " IRDistanceModule or MotorModule; got 'GripperModule'"), builtIn.getMessage());
 
         DescriptionSchemas extended = DescriptionSchemas.fromDirectory(
                 schemasWithBusModuleClass(temp.resolve("schemas"), "GripperModule"));
@@ -61,8 +61,13 @@ public class DescriptionSchemasTest {
         Path badHouse = ProjectFiles.resolve("test/robotworld/description/invalid/bad-house-code.xml");
         DescriptionException schemaError = assertThrows(DescriptionException.class,
                 () -> DescriptionLoader.loadWorld(badHouse, extended));
-        assertTrue(schemaError.getMessage().startsWith(badHouse + ":13:17: string value 'Q'"),
-                schemaError.getMessage());
+        assertTrue(schemaError.getMessage().startsWith(badHouse + ":13:17: HouseCode: an X10 house code is one"
+                + " capital letter from A to P; got 'Q'"), schemaError.getMessage());
+        Path world = worldWith("Wheel");
+        DescriptionException unknownClass = assertThrows(DescriptionException.class,
+                () -> DescriptionLoader.loadWorld(world, extended));
+        assertTrue(unknownClass.getMessage().contains("MotorModule or GripperModule; got 'Wheel'"),
+                unknownClass.getMessage()); // the choices of the schemas in use
         Path duplicate = ProjectFiles.resolve("test/robotworld/description/invalid/duplicate-participant.xml");
         DescriptionException ruleError = assertThrows(DescriptionException.class,
                 () -> DescriptionLoader.loadWorld(duplicate, extended));

@@ -15,7 +15,8 @@ import net.sf.saxon.s9api.XdmValue;
 /**
  * The functions every transfer stylesheet may call, in the namespace {@value #NAMESPACE}. They are the only way
  * description values should reach generated code: {@code gen:identifier}, {@code gen:qualified},
- * {@code gen:package}, {@code gen:java-string}, {@code gen:comment}, {@code gen:house}.
+ * {@code gen:package}, {@code gen:java-string}, {@code gen:comment}, {@code gen:house}, {@code gen:host} (the host name of a
+ * {@code <Host>} that may be written as a URL; its result still goes through one of the others).
  */
 public final class GeneratorFunctions {
 
@@ -31,7 +32,8 @@ public final class GeneratorFunctions {
                 function("package", JavaSource::qualifiedName),
                 function("java-string", JavaSource::stringLiteral),
                 function("comment", JavaSource::commentText),
-                function("house", JavaSource::houseCode))) {
+                function("house", JavaSource::houseCode),
+                function("host", robotworld.description.HostValue::hostName))) {
             processor.registerExtensionFunction(function);
         }
     }

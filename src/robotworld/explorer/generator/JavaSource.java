@@ -52,24 +52,42 @@ public final class JavaSource {
     }
 
     /**
-     * Text for a {@code //} or {@code /* *}{@code /} comment: on one line, without anything that ends the comment
-     * or that javac would read as a unicode escape (javac translates {@code \\u000a} even inside comments).
+     * Text for a {@code //} or {@code /* *}{@code /} comment (or an XML comment): on one line, without anything
+     * that ends the comment or that javac would read as a unicode escape (javac translates {@code \\u000a} even
+     * inside comments), and without invisible characters: control characters become blanks, and bidirectional
+     * overrides and other formatting characters are written out as {@code [U+202E]}, so that a comment can
+     * never make the code around it display differently from how it compiles ("Trojan source").
      */
     public static String commentText(String value) {
         StringBuilder text = new StringBuilder(value.length());
-        for (int i = 0; i < value.length(); i++) {
-            char c = value.charAt(i);
+        for (int i = 0; i < value.length(); ) {
+            int c = value.codePointAt(i);
+            int next = i + Character.charCount(c);
             if (c == '\\') {
                 text.append('/');
-            } else if (c == '*' && i + 1 < value.length() && value.charAt(i + 1) == '/') {
+            } else if (c == '*' && next < value.length() && value.charAt(next) == '/') {
                 text.append("* ");
-            } else if (c < 0x20 || c == 0x7f) {
+            } else if (c == '-' && next < value.length() && value.charAt(next) == '-') {
+                text.append("- "); // "--" may not appear in an XML comment
+            } else if (c < 0x20 || c == 0x7f || (c >= 0x80 && c <= 0x9f)) {
                 text.append(' ');
+            } else if (isInvisible(c)) {
+                text.append(String.format("[U+%04X]", c));
             } else {
-                text.append(c);
+                text.appendCodePoint(c);
             }
+            i = next;
         }
         return text.toString().strip();
+    }
+
+    /** Formatting, separator, private-use, unassigned and lone surrogate characters: nothing a reader can see. */
+    static boolean isInvisible(int c) {
+        return switch (Character.getType(c)) {
+            case Character.FORMAT, Character.LINE_SEPARATOR, Character.PARAGRAPH_SEPARATOR, Character.SURROGATE,
+                 Character.PRIVATE_USE, Character.UNASSIGNED, Character.CONTROL -> true;
+            default -> false;
+        };
     }
 
     /** An X10 house code A..P as it stands in a char literal. */

@@ -109,16 +109,18 @@ public final class PreparedWorld {
 
     private static String choosePackage(RobotWorldType world, String requested) throws GenerationException {
         String name = requested != null && !requested.isBlank() ? requested.strip()
-                : world.isSetPackageName() ? world.getPackageName() : world.getWorldName().toLowerCase();
-        if (!JavaNames.isQualifiedName(name)) {
-            throw new GenerationException("'" + name + "' is not a valid Java package name");
+                : world.isSetPackageName() ? world.getPackageName() : JavaNames.defaultPackageName(world.getWorldName());
+        String problem = JavaNames.problemWithPackageName(name);
+        if (problem != null) {
+            throw new GenerationException("'" + name + "' is not a valid Java package name: it " + problem);
         }
         return name;
     }
 
     private static String externalClassName(String worldName, List<String> participants) {
         String name = worldName + "External";
-        while (participants.contains(name)) {
+        // class names are file names: on Windows and macOS, DimRoomExternal.java and dimroomexternal.java clash
+        while (participants.stream().anyMatch(name::equalsIgnoreCase)) {
             name = name + "Program";
         }
         return name;

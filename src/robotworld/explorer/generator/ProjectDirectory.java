@@ -5,8 +5,10 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -14,19 +16,25 @@ import java.util.stream.Stream;
 
 /**
  * A project being generated: everything is written into a hidden temporary directory beside the destination
- * and moved into place only when complete, so a failed generation leaves nothing behind and a reader never
- * sees a half-written project.
+ * and moved into place only when complete, so a failed generation leaves nothing behind (not even the parent
+ * directories it had to create) and a reader never sees a half-written project. Directories and files are
+ * created with the default permissions, so the project honours the user's umask.
  */
 public final class ProjectDirectory implements AutoCloseable {
 
+    private static final SecureRandom RANDOM = new SecureRandom();
+
     private final Path destination;
     private final Path staging;
+    /** Parent directories this generation created, deepest first: removed again if it fails. */
+    private final List<Path> createdParents;
     private final List<Path> written = new ArrayList<>();
     private boolean committed;
 
-    private ProjectDirectory(Path destination, Path staging) {
+    private ProjectDirectory(Path destination, Path staging, List<Path> createdParents) {
         this.destination = destination;
         this.staging = staging;
+        this.createdParents = createdParents;
     }
 
     /** Checks the destination and opens a staging directory beside it. */
@@ -40,11 +48,44 @@ public final class ProjectDirectory implements AutoCloseable {
                     + " use --force to replace it");
         }
         Path parent = target.getParent();
+        List<Path> created = new ArrayList<>();
         try {
+            for (Path missing = parent; missing != null && Files.notExists(missing, LinkOption.NOFOLLOW_LINKS);
+                 missing = missing.getParent()) {
+                created.add(missing);
+            }
             Files.createDirectories(parent);
-            return new ProjectDirectory(target, Files.createTempDirectory(parent, ".rwe-generate-"));
+            return new ProjectDirectory(target, createStaging(parent), created);
         } catch (IOException e) {
+            removeEmpty(created);
             throw new GenerationException("cannot write to " + parent + ": " + describe(e), e);
+        }
+    }
+
+    /**
+     * A fresh hidden directory beside the destination. Not {@link Files#createTempDirectory}: that makes it
+     * private (0700), and the project would keep that mode whatever the user's umask says.
+     */
+    private static Path createStaging(Path parent) throws IOException {
+        for (int attempt = 0; ; attempt++) {
+            Path candidate = parent.resolve(".rwe-generate-" + Long.toUnsignedString(RANDOM.nextLong(), 36));
+            try {
+                return Files.createDirectory(candidate);
+            } catch (java.nio.file.FileAlreadyExistsException e) {
+                if (attempt > 10) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    private static void removeEmpty(List<Path> directories) {
+        for (Path directory : directories) {
+            try {
+                Files.deleteIfExists(directory);
+            } catch (IOException e) {
+                return; // not empty (someone else wrote there meanwhile) or not ours to remove: leave the rest
+            }
         }
     }
 
@@ -63,7 +104,7 @@ public final class ProjectDirectory implements AutoCloseable {
         Path file = resolve(relative);
         try {
             Files.createDirectories(file.getParent());
-            Files.copy(source, file, StandardCopyOption.COPY_ATTRIBUTES);
+            Files.copy(source, file);
             written.add(destination.resolve(relative));
         } catch (IOException e) {
             throw new GenerationException("cannot copy " + source + " into the project: " + describe(e), e);
@@ -98,11 +139,12 @@ public final class ProjectDirectory implements AutoCloseable {
         return List.copyOf(written);
     }
 
-    /** Removes the staging directory unless the project was committed. */
+    /** Removes the staging directory, and the parent directories made for it, unless the project was committed. */
     @Override
     public void close() {
         if (!committed) {
             deleteQuietly(staging);
+            removeEmpty(createdParents);
         }
     }
 

@@ -36,7 +36,8 @@ class ValidateCommandTest {
         String bad = file("test/robotworld/description/invalid/unit-code-seventeen.xml");
         int code = rwe("validate", file("docs/examples/lab-world.xml"), bad);
         assertEquals(1, code);
-        assertTrue(err.toString().startsWith(bad + ":14:16: string value 'SEVENTEEN'"), err.toString());
+        assertTrue(err.toString().startsWith(bad + ":14:16: UnitCode: an X10 unit code is a number word from ONE to"
+                + " SIXTEEN; got 'SEVENTEEN'"), err.toString());
         assertTrue(out.toString().contains("1 valid, 1 invalid"), out.toString());
         assertFalse(err.toString().contains("Exception"), err.toString());
         assertFalse(err.toString().contains("\tat "), err.toString());

@@ -63,7 +63,8 @@ class GenerationFailureTest {
     void invalidPackageIsRefused() throws Exception {
         GenerationException thrown = assertThrows(GenerationException.class, () -> generator.generate(
                 LISTING_3_5, "MyRobot", "my.class", temp.resolve("out"), false, GenerationListener.SILENT));
-        assertTrue(thrown.getMessage().contains("'my.class' is not a valid Java package name"), thrown.getMessage());
+        assertTrue(thrown.getMessage().contains("'my.class' is not a valid Java package name: it contains the Java"
+                + " keyword 'class'"), thrown.getMessage());
         assertEquals(List.of(), leftovers());
     }
 
@@ -74,6 +75,57 @@ class GenerationFailureTest {
                 LISTING_3_5, "MyRobot", null, file.resolve("out"), false, GenerationListener.SILENT));
         assertTrue(thrown.getMessage().startsWith("cannot write to " + file), thrown.getMessage());
         assertEquals(List.of("a-file"), leftovers());
+    }
+
+    @Test
+    void aFailedGenerationRemovesTheParentDirectoriesItCreated() throws Exception {
+        Path deep = temp.resolve("new/deeper/still/out");
+        // fails after the destination's parents exist: while writing into the staging directory
+        FrameworkGenerator failing = new FrameworkGenerator(FrameworkLibraries.defaultDirectory(),
+                new ClassLoaderWithBrokenSource(GenerationFailureTest.class.getClassLoader()));
+        assertThrows(GenerationException.class, () -> failing.generate(
+                LISTING_3_5, "MyRobot", null, deep, false, GenerationListener.SILENT));
+        assertEquals(List.of(), leftovers(), "no new/ left behind");
+        Files.createDirectories(temp.resolve("kept"));
+        assertThrows(GenerationException.class, () -> new FrameworkGenerator(temp.resolve("nojars")).generate(
+                LISTING_3_5, "MyRobot", null, temp.resolve("kept/a/b"), false, GenerationListener.SILENT));
+        assertEquals(List.of("kept"), leftovers(), "a directory that was there before stays");
+    }
+
+    /** Serves a source stylesheet that compiles but fails while transforming. */
+    private static final class ClassLoaderWithBrokenSource extends ClassLoader {
+        ClassLoaderWithBrokenSource(ClassLoader parent) {
+            super(parent);
+        }
+
+        @Override
+        public URL getResource(String name) {
+            if (name.equals("transfer/none/source.xslt")) {
+                try {
+                    Path broken = Files.createTempFile("broken", ".xslt");
+                    broken.toFile().deleteOnExit();
+                    Files.writeString(broken, "<xsl:stylesheet version='3.0' xmlns:xsl='http://www.w3.org/1999/XSL/"
+                            + "Transform'><xsl:template match='/'><xsl:sequence select=\"error((), 'boom')\"/>"
+                            + "</xsl:template></xsl:stylesheet>");
+                    return broken.toUri().toURL();
+                } catch (IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            }
+            return super.getResource(name);
+        }
+    }
+
+    /** A project's directories and files get the modes the user's umask allows, not a private 0700. */
+    @Test
+    void theProjectHonoursTheUmask() throws Exception {
+        Path out = temp.resolve("out");
+        generator.generate(LISTING_3_5, "MyRobot", null, out, false, GenerationListener.SILENT);
+        Path probe = Files.createDirectory(temp.resolve("probe")); // made with the umask of this process
+        assertEquals(Files.getPosixFilePermissions(probe), Files.getPosixFilePermissions(out));
+        assertEquals(Files.getPosixFilePermissions(probe), Files.getPosixFilePermissions(out.resolve("src")));
+        Path probeFile = Files.writeString(temp.resolve("probe.txt"), "x");
+        assertEquals(Files.getPosixFilePermissions(probeFile), Files.getPosixFilePermissions(out.resolve("build.xml")));
     }
 
     @Test

@@ -3,6 +3,7 @@ package robotworld.explorer.generator;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -34,6 +35,18 @@ class JavaSourceTest {
         assertFalse(safe.contains("*/"), safe);
         assertFalse(safe.contains("\\"), safe);
         assertFalse(safe.contains("\n") || safe.contains("\r"), safe);
+    }
+
+    /** "Trojan source": no bidirectional control or other invisible character reaches a generated comment. */
+    @Test
+    void commentTextWritesInvisibleCharactersOut() {
+        String hostile = "lamp \u202E } if (admin) { \u2066 \u2069 \u200B \u00AD \u2028 \u0085 \uFEFF \uE000 end";
+        String safe = JavaSource.commentText(hostile);
+        assertEquals("lamp [U+202E] } if (admin) { [U+2066] [U+2069] [U+200B] [U+00AD] [U+2028]   [U+FEFF] [U+E000] end",
+                safe);
+        safe.codePoints().forEach(c -> assertTrue(c >= 0x20 && c < 0x7f, "left in: U+" + Integer.toHexString(c)));
+        assertEquals("Stoßstange vorn, مصباح", JavaSource.commentText("Stoßstange vorn, مصباح"), "visible text stays");
+        assertEquals("a- -b", JavaSource.commentText("a--b"), "no XML comment end");
     }
 
     @Test

@@ -103,6 +103,22 @@ class XvsmFrameworkTest {
         assertEquals("MyWorld.MyRobot2", result.mainClass());
     }
 
+    /** A Host written as a URL, as the thesis writes hosts, names the host by its host part. */
+    @Test
+    void hostGivenAsUrlIsItsHostName() throws Exception {
+        Path world = java.nio.file.Files.writeString(temp.resolve("url-host.xml"), java.nio.file.Files
+                .readString(CHAPTER5).replace("<Host>robot-laptop</Host>", "<Host>http://robot-laptop:8080/robot</Host>")
+                .replace("<Host>room-pc</Host>", "<Host>tcp://[::1]:5000</Host>"));
+        GenerationResult result = new FrameworkGenerator().generate(world, "CaterpillarRobot", null, temp.resolve("p"),
+                false, GenerationListener.SILENT);
+        String robot = new GeneratedProject(result.destination()).read("src/chapter5/CaterpillarRobot.java");
+        assertTrue(robot.contains("public static final String HOST = \"robot-laptop\";"), robot);
+        result = new FrameworkGenerator().generate(world, "DimRoom", null, temp.resolve("q"), false,
+                GenerationListener.SILENT);
+        String room = new GeneratedProject(result.destination()).read("src/chapter5/DimRoom.java");
+        assertTrue(room.contains("public static final String HOST = \"[::1]\";"), room);
+    }
+
     @Test
     void environmentViewpointOpensItsCm11a() throws Exception {
         GenerationResult result = new FrameworkGenerator().generate(CHAPTER5, "DimRoom", null, temp.resolve("p"),
@@ -111,6 +127,29 @@ class XvsmFrameworkTest {
         assertTrue(room.contains("CM11aController.open(runtime.port(NAME, \"x10\", \"/dev/ttyS0\"))"), room);
         assertTrue(room.contains("new robotworld.x10.X10ApplianceModuleLocal(x10, 'A', 3)"), room);
         assertTrue(room.contains("public static final String SPACE_URL = \"http://localhost:9876/space\";"), room);
+    }
+
+    /**
+     * Validation refuses bidirectional controls in any text; a world built in memory is not validated, so the
+     * generator writes them out as text itself: none reaches a generated file.
+     */
+    @Test
+    void bidiControlsNeverReachGeneratedSources() throws Exception {
+        robotworld.description.RobotWorldDocument world = robotworld.description.DescriptionLoader.loadWorld(CHAPTER5);
+        world.getRobotWorld().getRobotDescriptionArray(0).getModuleArray(1)
+                .setDetails("bumper \u202E }; if (true) { \u2066 evil \u2069 \u200F");
+        GenerationResult result = new FrameworkGenerator().generate(world, "CaterpillarRobot", null,
+                temp.resolve("p"), false, GenerationListener.SILENT);
+        GeneratedProject project = new GeneratedProject(result.destination());
+        String robot = project.read("src/chapter5/CaterpillarRobot.java");
+        assertTrue(robot.contains("bumper [U+202E] }; if (true) { [U+2066] evil [U+2069] [U+200F]"), robot);
+        for (Path file : result.files()) {
+            if (!file.toString().endsWith(".jar")) {
+                assertTrue(java.nio.file.Files.readString(file).codePoints()
+                        .noneMatch(c -> Character.getType(c) == Character.FORMAT), file + " has a formatting character");
+            }
+        }
+        assertEquals("", project.compile(temp.resolve("classes")));
     }
 
     @Test
