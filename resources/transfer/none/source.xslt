@@ -57,6 +57,8 @@
     <xsl:if test="$self/rw:X10Module">
       <xsl:text>&#10;    private final robotworld.x10.CM11aController x10;&#10;</xsl:text>
     </xsl:if>
+    <xsl:text>&#10;    /** Puts the actuators into their safe state however the program ends (docs/safety.md). */&#10;</xsl:text>
+    <xsl:text>    private final robotworld.safety.HardwareSafety safety = robotworld.safety.HardwareSafety.forProgram(NAME);&#10;</xsl:text>
     <xsl:text>&#10;    /** Opens the hardware; ports come from the description unless overridden (see RuntimeSettings). */&#10;</xsl:text>
     <xsl:text>    public </xsl:text><xsl:value-of select="$class"/><xsl:text>() throws Exception {&#10;</xsl:text>
     <xsl:text>        RuntimeSettings settings = RuntimeSettings.fromSystem();&#10;</xsl:text>
@@ -70,28 +72,47 @@
       <xsl:value-of select="gen:java-string($self/rw:COMPort)"/><xsl:text>));&#10;</xsl:text>
     </xsl:if>
     <xsl:for-each select="$self/rw:Module">
-      <xsl:text>        </xsl:text><xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text> = new robotworld.bus.</xsl:text>
+      <xsl:apply-templates select="rw:Safety"/>
+      <xsl:text>        </xsl:text><xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text> = safety.guard(NAME, </xsl:text>
+      <xsl:value-of select="gen:java-string(rw:Name)"/><xsl:text>, new robotworld.bus.</xsl:text>
       <xsl:value-of select="gen:identifier(rw:Class)"/><xsl:text>Proxy(bus, </xsl:text><xsl:value-of select="xs:integer(rw:NodeNumber)"/>
-      <xsl:text>, </xsl:text><xsl:value-of select="gen:java-string(rw:Name)"/><xsl:text>);&#10;</xsl:text>
+      <xsl:text>, </xsl:text><xsl:value-of select="gen:java-string(rw:Name)"/><xsl:text>));&#10;</xsl:text>
     </xsl:for-each>
     <xsl:for-each select="$self/rw:X10Module">
-      <xsl:text>        </xsl:text><xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text> = new robotworld.x10.</xsl:text>
+      <xsl:apply-templates select="rw:Safety"/>
+      <xsl:text>        </xsl:text><xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text> = safety.guard(NAME, </xsl:text>
+      <xsl:value-of select="gen:java-string(rw:Name)"/><xsl:text>, new robotworld.x10.</xsl:text>
       <xsl:value-of select="gen:identifier(rw:Class)"/><xsl:text>Local(x10, '</xsl:text><xsl:value-of select="gen:house(rw:HouseCode)"/>
-      <xsl:text>', </xsl:text><xsl:value-of select="index-of($units, string(rw:UnitCode))"/><xsl:text>);&#10;</xsl:text>
+      <xsl:text>', </xsl:text><xsl:value-of select="index-of($units, string(rw:UnitCode))"/><xsl:text>));&#10;</xsl:text>
     </xsl:for-each>
     <xsl:text>    }&#10;&#10;</xsl:text>
-    <xsl:text>    /** Opens the hardware, runs the control program, and closes the hardware again. */&#10;</xsl:text>
+    <xsl:text>    /**&#10;     * Opens the hardware, runs the control program, and closes the hardware again. However the program ends&#10;</xsl:text>
+    <xsl:text>     * (return, exception, Ctrl-C, SIGTERM, System.exit), its actuators are put into their safe state first.&#10;     */&#10;</xsl:text>
     <xsl:text>    public static void main(String[] args) throws Exception {&#10;</xsl:text>
     <xsl:text>        try (</xsl:text><xsl:value-of select="$class"/><xsl:text> program = new </xsl:text><xsl:value-of select="$class"/>
-    <xsl:text>()) {&#10;            program.control();&#10;        }&#10;    }&#10;&#10;</xsl:text>
+    <xsl:text>()) {&#10;            try {&#10;                program.control();&#10;            } catch (Throwable failure) {&#10;</xsl:text>
+    <xsl:text>                program.safety.failed(failure);&#10;                throw failure;&#10;            }&#10;        }&#10;    }&#10;&#10;</xsl:text>
     <xsl:text>    /** The control program; the modules are the fields of this class. */&#10;</xsl:text>
     <xsl:text>    public void control() throws Exception {&#10;</xsl:text>
     <xsl:text>        // >>> control logic begins here&#10;</xsl:text>
     <xsl:text>        // &lt;&lt;&lt; control logic ends here&#10;</xsl:text>
     <xsl:text>    }&#10;&#10;</xsl:text>
-    <xsl:text>    @Override&#10;    public void close() throws Exception {&#10;</xsl:text>
+    <xsl:text>    /** Puts the actuators into their safe state, then closes the hardware. */&#10;</xsl:text>
+    <xsl:text>    @Override&#10;    public void close() throws Exception {&#10;        safety.close();&#10;</xsl:text>
     <xsl:if test="$self/rw:X10Module"><xsl:text>        x10.close();&#10;</xsl:text></xsl:if>
     <xsl:if test="$self/rw:Module"><xsl:text>        bus.close();&#10;</xsl:text></xsl:if>
     <xsl:text>    }&#10;}&#10;</xsl:text>
+  </xsl:template>
+
+  <!-- a module's <Safety>: handed to the program's safety before the module is guarded (docs/safety.md) -->
+  <xsl:template match="rw:Safety">
+    <xsl:text>        safety.describe(NAME, </xsl:text><xsl:value-of select="gen:java-string(../rw:Name)"/>
+    <xsl:text>, new robotworld.safety.ModuleSafety(</xsl:text>
+    <xsl:value-of select="if (rw:CommandTimeout) then xs:integer(rw:CommandTimeout) else 'null'"/>
+    <xsl:text>, </xsl:text>
+    <xsl:value-of select="if (rw:Watchdog) then xs:integer(rw:Watchdog) else 'null'"/>
+    <xsl:text>, </xsl:text>
+    <xsl:value-of select="if (rw:SafeState) then gen:java-string(rw:SafeState) else 'null'"/>
+    <xsl:text>));&#10;</xsl:text>
   </xsl:template>
 </xsl:stylesheet>

@@ -233,11 +233,26 @@
       <xsl:text>runtime.port(NAME, "x10", </xsl:text><xsl:value-of select="gen:java-string(rw:COMPort)"/><xsl:text>)));&#10;</xsl:text>
     </xsl:if>
     <xsl:for-each select="gen:modules(.)">
+      <xsl:apply-templates select="rw:Safety"><xsl:with-param name="target" select="'runtime.safety()'"/></xsl:apply-templates>
       <xsl:text>        </xsl:text><xsl:value-of select="gen:identifier(@gen:field)"/>
       <xsl:text> = runtime.own(new XVSM</xsl:text><xsl:value-of select="gen:identifier(rw:Class)"/>
       <xsl:text>Local(runtime, NAME, </xsl:text><xsl:value-of select="gen:java-string(rw:Name)"/><xsl:text>,&#10;                </xsl:text>
       <xsl:apply-templates select="." mode="hardware"/><xsl:text>));&#10;</xsl:text>
     </xsl:for-each>
+  </xsl:template>
+
+  <!-- a module's <Safety>: handed to the safety layer before the module is served (docs/safety.md) -->
+  <xsl:template match="rw:Safety">
+    <xsl:param name="target" as="xs:string"/>
+    <xsl:text>        </xsl:text><xsl:value-of select="$target"/><xsl:text>.describe(NAME, </xsl:text>
+    <xsl:value-of select="gen:java-string(../rw:Name)"/>
+    <xsl:text>, new robotworld.safety.ModuleSafety(</xsl:text>
+    <xsl:value-of select="if (rw:CommandTimeout) then xs:integer(rw:CommandTimeout) else 'null'"/>
+    <xsl:text>, </xsl:text>
+    <xsl:value-of select="if (rw:Watchdog) then xs:integer(rw:Watchdog) else 'null'"/>
+    <xsl:text>, </xsl:text>
+    <xsl:value-of select="if (rw:SafeState) then gen:java-string(rw:SafeState) else 'null'"/>
+    <xsl:text>));&#10;</xsl:text>
   </xsl:template>
 
   <!-- naming convention: bus module hardware proxies are robotworld.bus.<Class>Proxy(bus, address, name) -->

@@ -5,6 +5,9 @@ import java.util.function.Consumer;
 import robotworld.bus.ModuleProxy;
 import robotworld.bus.MotorModuleProxy;
 import robotworld.core.MotorModule;
+import robotworld.core.ServoModule;
+import robotworld.core.X10ApplianceModule;
+import robotworld.core.X10LampModule;
 
 /**
  * The safe states of the built-in module types, as actions on their hardware, for the actuators' proxies to
@@ -34,6 +37,44 @@ public final class SafeStates {
             }
         }
         return "motors 1-" + MotorModule.MOTORS + " set to 0";
+    }
+
+    /**
+     * The actuator view of a hardware proxy, for programs without Local proxies ({@link HardwareSafety}): motor,
+     * servo and X10 modules by their interface, anything implementing {@link Actuator} as itself; null for a
+     * sensor. Such an actuator is never engaged (the rules that need commanders and a space do not apply).
+     */
+    public static Actuator actuatorOf(Object hardware, X10SafeState x10) {
+        if (hardware instanceof Actuator actuator) {
+            return actuator;
+        }
+        if (hardware instanceof MotorModule motors) {
+            return atRest(() -> stopMotors(motors));
+        }
+        if (hardware instanceof ServoModule) {
+            return atRest(() -> SERVOS_HOLD);
+        }
+        if (hardware instanceof X10LampModule lamp) {
+            return atRest(() -> x10(x10, lamp::on, lamp::off));
+        }
+        if (hardware instanceof X10ApplianceModule appliance) {
+            return atRest(() -> x10(x10, appliance::on, appliance::off));
+        }
+        return null;
+    }
+
+    private static Actuator atRest(java.util.function.Supplier<String> safeState) {
+        return new Actuator() {
+            @Override
+            public String enterSafeState() {
+                return safeState.get();
+            }
+
+            @Override
+            public boolean isEngaged() {
+                return false;
+            }
+        };
     }
 
     /**
