@@ -57,8 +57,8 @@ public final class BusWatchdog implements AutoCloseable {
     }
 
     /**
-     * Arms the watchdog of the module at {@code address}. If it had tripped before (its previous master went
-     * silent), {@code onTrip} hears of that first.
+     * Arms the watchdog of the module at {@code address}. That it had tripped before (its previous master went
+     * silent or ended) is only logged: it happened before this program, which has commanded nothing yet.
      *
      * @param timeout 10..65535 ms
      * @param onTrip  told, with a sentence, whenever the module's watchdog is found tripped
@@ -81,8 +81,8 @@ public final class BusWatchdog implements AutoCloseable {
             return false;
         }
         if (trippedBefore) {
-            onTrip.accept("its communication watchdog had tripped before this program armed it (its previous "
-                    + "master went silent)");
+            LOG.info("{} on {}: its communication watchdog had tripped before this program armed it (its previous "
+                    + "master went silent or ended)", bus.describe(address), bus.portName());
         }
         armed.put(address, new Armed(address, (int) millis, onTrip));
         startFeeder();

@@ -53,7 +53,7 @@ import robotworld.space.Timeout;
 public final class SafetySupervisor implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(SafetySupervisor.class);
-    static final long POLL_MILLIS = 50;
+    static final long POLL_MILLIS = 20;
     static final long CHECK_MILLIS = 10;
     /** The heartbeat and the last publications of a closing program wait at most this long for the space. */
     private static final long CLOSE_GRACE_MILLIS = 500;

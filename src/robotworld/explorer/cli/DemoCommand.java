@@ -14,7 +14,10 @@ import robotworld.explorer.demo.DemoOptions;
 import robotworld.explorer.demo.DemoSummary;
 import robotworld.explorer.demo.Viewpoint;
 
-/** {@code rwe demo [--seconds N] [--viewpoint robot|environment] [--out DIR] [--console]}: the chapter-5 demo. */
+/**
+ * {@code rwe demo [--seconds N] [--viewpoint robot|environment] [--out DIR] [--console] [--kill-control]}: the
+ * chapter-5 demo.
+ */
 @Command(name = "demo", mixinStandardHelpOptions = true,
         description = {"Run the thesis chapter-5 scenario end to end on simulated hardware (see docs/demo.md):",
                 "space server, simulated robot and CM11A, bus exploration, world assembly, two generated frameworks",
@@ -38,6 +41,10 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--console", description = "console monitor even when a display is available")
     private boolean console;
 
+    @Option(names = "--kill-control", description = "kill the control program (SIGKILL) while the robot drives "
+            + "and show the robot stopping by itself (docs/safety.md)")
+    private boolean killControl;
+
     @Spec
     private CommandSpec spec;
 
@@ -47,7 +54,7 @@ final class DemoCommand implements Callable<Integer> {
         DemoOptions options;
         try {
             options = new DemoOptions(Duration.ofMillis(Math.round(seconds * 1000)), Viewpoint.parse(viewpoint),
-                    out, console, DemoOptions.defaultHome());
+                    out, console, DemoOptions.defaultHome(), killControl);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

@@ -32,8 +32,17 @@ import robotworld.explorer.monitor.MonitoredWorld;
 import robotworld.explorer.monitor.WorldMonitor;
 import robotworld.sim.Cm11aTiming;
 import robotworld.sim.SimulatedCm11a;
+import robotworld.safety.SafetyContainers;
+import robotworld.safety.StopCause;
+import robotworld.safety.StopRecord;
+import robotworld.sim.robot.Pose;
+import robotworld.sim.robot.SimModule;
+import robotworld.sim.robot.SimMotorModule;
 import robotworld.sim.robot.SimulatedRobot;
 import robotworld.space.Capi;
+import robotworld.space.Entry;
+import robotworld.space.Selector;
+import robotworld.space.Timeout;
 import robotworld.space.server.SpaceServer;
 import robotworld.description.RobotWorldDocument;
 import robotworld.xvsm.XVSMBumperModuleRemote;
@@ -54,6 +63,9 @@ public final class Demo {
     private static final Pattern STATS = Pattern.compile(
             "DEMO-STATS name=(\\w+) calls=(\\d+) p50us=(\\d+) p99us=(\\d+) maxus=(\\d+)");
     private static final Pattern BUMPS = Pattern.compile("DEMO-STATS name=bumps count=(\\d+)");
+    private static final int STEPS = 9;
+    /** How long after its start the control program is killed with --kill-control (at most half the run). */
+    private static final Duration KILL_AFTER = Duration.ofSeconds(4);
 
     private final DemoOptions options;
     private final PrintWriter out;
@@ -73,7 +85,7 @@ public final class Demo {
 
     private <T> T step(String what, Work<T> work) throws StepFailed {
         stepNumber++;
-        out.println("[" + stepNumber + "/8] " + what);
+        out.println("[" + stepNumber + "/" + STEPS + "] " + what);
         out.flush();
         long started = System.nanoTime();
         try {
@@ -273,6 +285,7 @@ public final class Demo {
                     });
                 }
                 runPrograms(programs, spaceUrl, sims, generated, robotControls);
+                checkSafeState(programs, sims, monitorSpace);
             } finally {
                 if (worldMonitor[0] != null) {
                     SwingUtilities.invokeAndWait(() -> worldMonitor[0].close());
@@ -283,6 +296,7 @@ public final class Demo {
                 summary.monitorLampOn = tally.lampOn.get();
                 summary.monitorLampOff = tally.lampOff.get();
                 summary.monitorMotor = tally.motorAnswers.get();
+                summary.monitorStops = tally.stops.get();
                 summary.endPose = sims.robot.pose();
             }
         }
@@ -291,10 +305,14 @@ public final class Demo {
             if (summary.distanceMoved() < 20) {
                 problems.add("the robot did not move");
             }
-            if (summary.bumps < 1) {
+            if (options.killControl()) {
+                if (summary.kill == null || summary.kill.millisToZero() < 0) {
+                    problems.add("the robot did not stop after its control program was killed");
+                }
+            } else if (summary.bumps < 1) {
                 problems.add("no bump happened");
             }
-            if (summary.lampOnFrames < 1 || summary.lampOffFrames < 1) {
+            if (!options.killControl() && (summary.lampOnFrames < 1 || summary.lampOffFrames < 1)) {
                 problems.add("the lamp was not switched on and off at the CM11A");
             }
             if (summary.monitorAnswers < 1) {
@@ -303,7 +321,8 @@ public final class Demo {
             if (!problems.isEmpty()) {
                 throw new IllegalStateException(String.join("; ", problems));
             }
-            say("robot moved, bumped, lamp switched, monitor saw it");
+            say(options.killControl() ? "robot moved, stopped by itself when its control program was killed, monitor "
+                    + "saw it" : "robot moved, bumped, lamp switched, monitor saw it");
             return null;
         });
     }
@@ -336,7 +355,12 @@ public final class Demo {
                     controlProperties);
             programs.add(controlling);
             say("control program " + controller.mainClass() + " started (pid " + controlling.pid() + ", log "
-                    + controlling.log() + "), runs until the deadline");
+                    + controlling.log() + ")" + (options.killControl() ? ", to be killed while the robot drives"
+                    : ", runs until the deadline"));
+            if (options.killControl()) {
+                killMidDrive(controlling, sims, robotControls, until);
+                return null;
+            }
             int reported = 0;
             while (System.currentTimeMillis() < until + 20_000 && controlling.isAlive()
                     && !controlling.output().contains("DEMO-END")) {
@@ -359,6 +383,148 @@ public final class Demo {
             if (!providing.isAlive()) {
                 throw new IllegalStateException("the provider ended early; its log:\n" + providing.tail(20));
             }
+            return null;
+        });
+    }
+
+    /**
+     * Kills the control program (SIGKILL) once the robot has driven forward for a while, then watches the motor
+     * module until it reads 0 and the robot has come to rest.
+     */
+    private void killMidDrive(ProgramProcess controlling, Simulators sims, boolean robotControls, long until)
+            throws Exception {
+        SimMotorModule motors = wheelMotors(sims.robot);
+        long killAt = System.currentTimeMillis() + Math.min(KILL_AFTER.toMillis(), options.run().toMillis() / 2);
+        while (System.currentTimeMillis() < Math.max(killAt, until) + 20_000 && controlling.isAlive()) {
+            boolean forward = motors.setSpeed(1) > 0 && motors.setSpeed(2) > 0;
+            if (System.currentTimeMillis() >= killAt && forward) {
+                break;
+            }
+            Thread.sleep(5);
+        }
+        if (!controlling.isAlive()) {
+            throw new IllegalStateException("the control program ended before it could be killed; its log:\n"
+                    + controlling.tail(20));
+        }
+        int left = motors.setSpeed(1);
+        int right = motors.setSpeed(2);
+        Pose atKill = sims.robot.pose();
+        long killed = System.nanoTime();
+        controlling.kill();
+        say(String.format(Locale.ROOT, "KILLED the control program %s (SIGKILL, pid %d) while the robot drove at "
+                + "%+.3f/%+.3f at %s", controlling.mainClass(), controlling.pid(), left / 1000.0, right / 1000.0,
+                atKill));
+        long stoppedAt = -1;
+        long nextReport = 0;
+        while (System.nanoTime() - killed < Duration.ofSeconds(10).toNanos()) {
+            long now = System.nanoTime();
+            boolean stopped = motors.setSpeed(1) == 0 && motors.setSpeed(2) == 0;
+            if (stopped) {
+                stoppedAt = now;
+                break;
+            }
+            if (now >= nextReport) {
+                say(String.format(Locale.ROOT, "  %4d ms after the kill: motors %+.3f/%+.3f, robot at %s",
+                        (now - killed) / 1_000_000, motors.setSpeed(1) / 1000.0, motors.setSpeed(2) / 1000.0,
+                        sims.robot.pose()));
+                nextReport = now + 100_000_000L;
+            }
+            Thread.sleep(1);
+        }
+        double millis = stoppedAt < 0 ? -1 : (stoppedAt - killed) / 1e6;
+        Pose rest = awaitRest(sims.robot);
+        String why = robotControls
+                ? "the motor module's own bus watchdog (" + wheelMotorsWatchdog(motors) + " ms without a frame from its "
+                        + "master: the killed program served it)"
+                : "the robot's program, which serves the motors: their commander went silent for the command timeout";
+        summary.kill = new DemoSummary.Kill(controlling.mainClass(), left, right, atKill, millis, rest,
+                stoppedAt < 0 ? "nobody: the motors still run" : why);
+        if (stoppedAt < 0) {
+            throw new IllegalStateException("the motors still run 10 s after the control program was killed");
+        }
+        say(String.format(Locale.ROOT, "  motors read 0 at the module %.0f ms after the kill, stopped by %s", millis,
+                why));
+        say(String.format(Locale.ROOT, "  the robot came to rest at %s, %.0f mm after the kill", rest,
+                atKill.distanceTo(rest)));
+    }
+
+    /** The motor module that drives the simulated robot's wheels. */
+    private static SimMotorModule wheelMotors(SimulatedRobot robot) {
+        for (SimModule module : robot.simulation().modules().values()) {
+            if (module instanceof SimMotorModule motors && motors.drivesWheels()) {
+                return motors;
+            }
+        }
+        throw new IllegalStateException("the simulated robot has no motor module driving its wheels");
+    }
+
+    private static int wheelMotorsWatchdog(SimMotorModule motors) {
+        return motors.watchdogMillis();
+    }
+
+    /** Waits until the simulated robot stands still (its pose unchanged for 200 ms), at most 5 s. */
+    private static Pose awaitRest(SimulatedRobot robot) throws InterruptedException {
+        Pose last = robot.pose();
+        long stillSince = System.nanoTime();
+        long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
+        while (System.nanoTime() < deadline) {
+            Thread.sleep(20);
+            Pose now = robot.pose();
+            if (now.distanceTo(last) > 0.01) {
+                last = now;
+                stillSince = System.nanoTime();
+            } else if (System.nanoTime() - stillSince > 200_000_000L) {
+                break;
+            }
+        }
+        return last;
+    }
+
+    /**
+     * Ends the programs as Ctrl-C would (SIGTERM: their runtimes stop their actuators first), then reads the
+     * actuators at the simulated hardware and the stop records of the space.
+     */
+    private void checkSafeState(List<ProgramProcess> programs, Simulators sims, Capi space) throws StepFailed {
+        step("ending the programs (SIGTERM, as Ctrl-C) and checking that the robot's actuators are in their safe "
+                + "state", () -> {
+            for (ProgramProcess program : programs) {
+                if (program.isAlive()) {
+                    program.close();
+                    say("ended " + program.mainClass() + " (SIGTERM)");
+                }
+            }
+            List<String> moving = new ArrayList<>();
+            for (SimModule module : sims.robot.simulation().modules().values()) {
+                if (module instanceof SimMotorModule motors) {
+                    List<Integer> speeds = new ArrayList<>();
+                    for (int motor = 1; motor <= SimMotorModule.CHANNELS; motor++) {
+                        speeds.add(motors.setSpeed(motor));
+                    }
+                    String line = ROBOT + " motor module at bus address " + module.address() + ": motors 1-8 read "
+                            + speeds + (speeds.stream().allMatch(v -> v == 0) ? ": safe (0)" : ": STILL MOVING")
+                            + (motors.watchdogMillis() > 0 ? ", bus watchdog armed with " + motors.watchdogMillis()
+                            + " ms" : "");
+                    summary.safeState.add(line);
+                    say(line);
+                    if (speeds.stream().anyMatch(v -> v != 0)) {
+                        moving.add("motor module " + module.address());
+                    }
+                }
+            }
+            String lamp = ENVIRONMENT + " lamp (X10 A3): " + (sims.cm11a.appliance(robotworld.x10.X10Address.of('A', 3))
+                    .isOn() ? "on" : "off") + ", left as it is (X10 safe state: unchanged)";
+            summary.safeState.add(lamp);
+            say(lamp);
+            for (Entry entry : space.read(SafetyContainers.stops(space), Timeout.TRY_ONCE,
+                    Selector.fifo(Selector.ALL))) {
+                StopRecord stop = StopRecord.parse(entry);
+                summary.stops.add(stop.toString());
+                say("stop record: " + stop);
+            }
+            if (!moving.isEmpty()) {
+                throw new IllegalStateException("not in their safe state after the programs ended: " + moving);
+            }
+            summary.safe = true;
             return null;
         });
     }

@@ -12,8 +12,15 @@ import java.util.Objects;
  * @param out       where the descriptions and generated projects go
  * @param console   console monitor even when a display is available
  * @param home      the RobotWorldExplorer home (ModuleDescriptions/, docs/examples/)
+ * @param killControl kill the control program (SIGKILL) while the robot drives, and show the robot stopping
  */
-public record DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home) {
+public record DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home,
+                          boolean killControl) {
+
+    /** The demo without the kill. */
+    public DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home) {
+        this(run, viewpoint, out, console, home, false);
+    }
 
     public DemoOptions {
         Objects.requireNonNull(run, "run");

@@ -10,6 +10,21 @@ import robotworld.sim.robot.Pose;
 /** What a demo run did: the outcome the summary prints and the test checks. */
 public final class DemoSummary {
 
+    /**
+     * The robot stopping after its control program was killed ({@code --kill-control}).
+     *
+     * @param program      the killed main class
+     * @param left         left motor's speed when killed, per-mille
+     * @param right        right motor's speed when killed, per-mille
+     * @param atKill       where the robot was
+     * @param millisToZero from the kill to both motors reading 0 at the module; -1 when they did not
+     * @param atRest       where the robot came to rest
+     * @param stoppedBy    what stopped it
+     */
+    public record Kill(String program, int left, int right, Pose atKill, double millisToZero, Pose atRest,
+                       String stoppedBy) {
+    }
+
     /** Timing of one group of calls made by the control program. */
     public record CallStats(String name, int calls, long p50Micros, long p99Micros, long maxMicros) {
     }
@@ -26,6 +41,11 @@ public final class DemoSummary {
     int monitorLampOn;
     int monitorLampOff;
     int monitorMotor;
+    int monitorStops;
+    Kill kill;
+    boolean safe;
+    final List<String> safeState = new ArrayList<>();
+    final List<String> stops = new ArrayList<>();
     final List<CallStats> calls = new ArrayList<>();
     Path robotProject;
     Path environmentProject;
@@ -93,6 +113,31 @@ public final class DemoSummary {
         return monitorMotor;
     }
 
+    /** Whether every actuator was found in its safe state after the programs ended. */
+    public boolean safe() {
+        return safe;
+    }
+
+    /** What the actuators read after the programs ended, one line each. */
+    public List<String> safeState() {
+        return List.copyOf(safeState);
+    }
+
+    /** The stop records the space held at the end, one line each. */
+    public List<String> stops() {
+        return List.copyOf(stops);
+    }
+
+    /** The kill of the control program, or null without {@code --kill-control}. */
+    public Kill kill() {
+        return kill;
+    }
+
+    /** Stops the monitor showed. */
+    public int monitorStops() {
+        return monitorStops;
+    }
+
     public List<CallStats> calls() {
         return List.copyOf(calls);
     }
@@ -123,6 +168,24 @@ public final class DemoSummary {
             out.printf(Locale.ROOT, "%-17s %d calls (%s): p50 %.2f ms, p99 %.2f ms, max %.2f ms%n",
                     stats.name() + " calls", stats.calls(), where, stats.p50Micros() / 1000.0,
                     stats.p99Micros() / 1000.0, stats.maxMicros() / 1000.0);
+        }
+        if (kill != null) {
+            out.printf(Locale.ROOT, "killed mid-drive  %s (SIGKILL) at %+.3f/%+.3f: motors read 0 %s; robot came to "
+                    + "rest %.0f mm further at %s%n", kill.program(), kill.left() / 1000.0, kill.right() / 1000.0,
+                    kill.millisToZero() < 0 ? "NEVER" : String.format(Locale.ROOT, "%.0f ms after the kill, stopped "
+                            + "by %s", kill.millisToZero(), kill.stoppedBy()),
+                    kill.atKill() == null || kill.atRest() == null ? 0 : kill.atKill().distanceTo(kill.atRest()),
+                    kill.atRest());
+        }
+        out.println("safe state        " + (safeState.isEmpty() ? "not checked"
+                : safe ? "the robot's actuators are in their safe state (motors read 0 at the module)"
+                : "NOT every actuator is in its safe state"));
+        for (String line : safeState) {
+            out.println("                    " + line);
+        }
+        out.println("stops recorded    " + stops.size() + " (the monitor showed " + monitorStops + ")");
+        for (String line : stops) {
+            out.println("                    " + line);
         }
         out.println("robot description " + robotDescription);
         out.println("world description " + world);

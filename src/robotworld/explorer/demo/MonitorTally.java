@@ -24,6 +24,7 @@ final class MonitorTally extends Writer {
     final AtomicInteger lampOn = new AtomicInteger();
     final AtomicInteger lampOff = new AtomicInteger();
     final AtomicInteger motorAnswers = new AtomicInteger();
+    final AtomicInteger stops = new AtomicInteger();
 
     /** @param echo where the changed lines go, or null for none */
     MonitorTally(PrintWriter echo) {
@@ -49,6 +50,11 @@ final class MonitorTally extends Writer {
         }
         String[] parts = line.trim().split("\\s+");
         if (line.startsWith("#") || parts.length < 4) {
+            print(line);
+            return;
+        }
+        if (parts[3].equals("STOPPED")) {
+            stops.incrementAndGet();
             print(line);
             return;
         }

@@ -49,6 +49,12 @@ final class ProgramProcess implements AutoCloseable {
         return process.pid();
     }
 
+    /** SIGKILL: the program ends at once, nothing of it cleans up. */
+    void kill() throws InterruptedException {
+        process.destroyForcibly();
+        process.waitFor(10, TimeUnit.SECONDS);
+    }
+
     String output() {
         try {
             return Files.readString(log);
@@ -63,6 +69,7 @@ final class ProgramProcess implements AutoCloseable {
         return String.join("\n", all.subList(Math.max(0, all.size() - lines), all.size()));
     }
 
+    /** SIGTERM, as Ctrl-C would stop it: its runtime stops its actuators first; after 10 s, SIGKILL. */
     @Override
     public void close() {
         if (process.isAlive()) {

@@ -53,7 +53,29 @@ class DemoTest {
         assertTrue(!Files.readString(unchanged).contains("DEMO-STATS"), "the provider runs unchanged");
         assertTrue(Files.isDirectory(summary.robotProject().resolve("build/classes")));
         assertTrue(Files.isDirectory(summary.environmentProject().resolve("build/classes")));
-        assertTrue(output.contains("[8/8]") && output.contains("result            OK"), output);
+        assertTrue(output.contains("[9/9]") && output.contains("result            OK"), output);
+        // however the programs ended, the robot's actuators are in their safe state, read at the hardware
+        assertTrue(summary.safe(), summary.safeState().toString());
+        assertTrue(output.contains("safe state        the robot's actuators are in their safe state"), output);
+        assertTrue(summary.stops().stream().anyMatch(stop -> stop.contains("CaterpillarRobot/")
+                && stop.contains("motors 1-8 set to 0")), summary.stops().toString());
+    }
+
+    @Test
+    void killingTheControlProgramMidDriveStopsTheRobot() throws Exception {
+        StringWriter text = new StringWriter();
+        DemoOptions options = new DemoOptions(Duration.ofSeconds(8), Viewpoint.ENVIRONMENT, temp.resolve("demo"), true,
+                ProjectFiles.root(), true);
+        DemoSummary summary = new Demo(options, new PrintWriter(text, true)).run();
+        String output = text.toString();
+        assertTrue(summary.succeeded(), summary.failures() + "\n" + output);
+        DemoSummary.Kill kill = summary.kill();
+        assertTrue(kill.left() > 0 && kill.right() > 0, "killed while driving forward: " + kill);
+        assertTrue(kill.millisToZero() >= 0, kill.toString());
+        assertTrue(output.contains("KILLED the control program chapter5demo.DimRoom (SIGKILL"), output);
+        assertTrue(summary.stops().stream().anyMatch(stop -> stop.contains("commander-silent")),
+                summary.stops().toString());
+        assertTrue(summary.safe(), output);
     }
 
     @Test
@@ -66,6 +88,6 @@ class DemoTest {
         String output = text.toString();
         assertTrue(!summary.succeeded(), output);
         assertTrue(summary.failures().get(0).startsWith("step 2 "), summary.failures().toString());
-        assertTrue(output.contains("[2/8]") && output.contains("FAILED") && !output.contains("[3/8]"), output);
+        assertTrue(output.contains("[2/9]") && output.contains("FAILED") && !output.contains("[3/9]"), output);
     }
 }
