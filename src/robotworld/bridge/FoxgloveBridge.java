@@ -229,6 +229,17 @@ public final class FoxgloveBridge implements AutoCloseable {
         return clients.size();
     }
 
+    /** Subscriptions of all clients together. */
+    public int subscriptionCount() {
+        int count = 0;
+        for (Client client : clients) {
+            synchronized (client) {
+                count += client.subscriptions.size();
+            }
+        }
+        return count;
+    }
+
     /** Messages published so far (to however many subscribers). */
     public long published() {
         return published.get();
@@ -411,7 +422,12 @@ public final class FoxgloveBridge implements AutoCloseable {
     }
 
     /** One connected client: its subscriptions and its bounded backlog. */
-    private final class Client implements Session.Listener.AutoDemanding {
+    /** Public only because Jetty calls its listener methods reflectively; not part of the API. */
+    public final class Client implements Session.Listener.AutoDemanding {
+
+        private Client() {
+        }
+
         private volatile Session session;
         /** channel id -> subscription id; guarded by this client. */
         private final Map<Integer, Integer> subscriptions = new HashMap<>();
@@ -561,6 +577,9 @@ public final class FoxgloveBridge implements AutoCloseable {
     }
 
     private static String shorten(String text) {
+        if (text == null) {
+            return "";
+        }
         return text.length() > 40 ? text.substring(0, 40) + "..." : text;
     }
 
