@@ -38,6 +38,10 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--console", description = "console monitor even when a display is available")
     private boolean console;
 
+    @Option(names = "--record", paramLabel = "FILE.mcap",
+            description = "record the world's traffic into FILE.mcap (see docs/recording.md)")
+    private Path record;
+
     @Spec
     private CommandSpec spec;
 
@@ -47,7 +51,7 @@ final class DemoCommand implements Callable<Integer> {
         DemoOptions options;
         try {
             options = new DemoOptions(Duration.ofMillis(Math.round(seconds * 1000)), Viewpoint.parse(viewpoint),
-                    out, console, DemoOptions.defaultHome());
+                    out, console, DemoOptions.defaultHome()).recording(record);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

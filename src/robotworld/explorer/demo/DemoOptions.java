@@ -12,8 +12,19 @@ import java.util.Objects;
  * @param out       where the descriptions and generated projects go
  * @param console   console monitor even when a display is available
  * @param home      the RobotWorldExplorer home (ModuleDescriptions/, docs/examples/)
+ * @param record    an MCAP file to record the world's traffic into, or null for none
  */
-public record DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home) {
+public record DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home, Path record) {
+
+    /** Without a recording. */
+    public DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home) {
+        this(run, viewpoint, out, console, home, null);
+    }
+
+    /** The same, recording into {@code file} (null: none). */
+    public DemoOptions recording(Path file) {
+        return new DemoOptions(run, viewpoint, out, console, home, file);
+    }
 
     public DemoOptions {
         Objects.requireNonNull(run, "run");
