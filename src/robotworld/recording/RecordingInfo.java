@@ -89,10 +89,11 @@ public record RecordingInfo(Path file, long size, String library, boolean finish
         out.println("channels     " + summary.channels().size());
         List<Channel> channels = summary.channels();
         int width = channels.stream().mapToInt(c -> c.topic().length()).max().orElse(10);
+        int schemaWidth = summary.schemas().stream().mapToInt(s -> s.name().length()).max().orElse(11);
         for (Channel channel : channels) {
             Schema schema = summary.schema(channel.schemaId());
             long count = stats.channelMessageCounts().getOrDefault(channel.id(), 0L);
-            out.printf(Locale.ROOT, "  %-" + width + "s  %-22s %-5s %8d%n", channel.topic(),
+            out.printf(Locale.ROOT, "  %-" + width + "s  %-" + schemaWidth + "s  %-5s %8d%n", channel.topic(),
                     schema == null ? "(no schema)" : schema.name(), channel.messageEncoding(), count);
         }
         if (!summary.attachments().isEmpty()) {

@@ -117,6 +117,7 @@ final class RecordCommand implements Callable<Integer> {
             } catch (SpaceException e) {
                 tap.close();
                 recorder.close("the space could not be watched");
+                Files.deleteIfExists(out); // nothing was recorded: leave nothing behind
                 err.println("rwe record: cannot watch " + layout.world() + " in the space at " + url + ": "
                         + e.getMessage() + " (start it with 'rwe space', or name another with --space URL)");
                 return 1;
@@ -150,8 +151,13 @@ final class RecordCommand implements Callable<Integer> {
                 }
             }
         } catch (SpaceException e) {
+            boolean empty = recorder.status().messages() == 0;
             recorder.close("the space could not be reached");
-            err.println("rwe record: cannot reach the space at " + url + ": " + e.getMessage());
+            if (empty) {
+                Files.deleteIfExists(out);
+            }
+            err.println("rwe record: cannot reach the space at " + url + ": " + e.getMessage()
+                    + " (start it with 'rwe space', or name another with --space URL)");
             return 1;
         }
         Recorder.Status status = recorder.status();

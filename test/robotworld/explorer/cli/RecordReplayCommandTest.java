@@ -99,7 +99,9 @@ class RecordReplayCommandTest {
         int code = rwe("record", ProjectFiles.resolve("docs/examples/chapter5-world.xml").toString(), "--out",
                 folder.resolve("y.mcap").toString(), "--space", "http://127.0.0.1:9/space", "--duration", "1");
         assertEquals(1, code, out + "" + err);
-        assertTrue(err.toString().contains("rwe record: cannot"), err.toString());
+        assertTrue(err.toString().contains("rwe record: cannot") && err.toString().contains("--space URL"),
+                err.toString());
+        assertTrue(!Files.exists(folder.resolve("y.mcap")), "nothing recorded, nothing left behind");
         assertTrue(!err.toString().contains("\tat "), "no stack trace: " + err);
     }
 }
