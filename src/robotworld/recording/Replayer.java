@@ -35,6 +35,8 @@ import robotworld.space.Order;
 import robotworld.space.Selector;
 import robotworld.space.SpaceTimeoutException;
 import robotworld.space.Timeout;
+import robotworld.safety.SafetyContainers;
+import robotworld.telemetry.SafetyTelemetry;
 import robotworld.telemetry.TrafficJson;
 
 /**
@@ -53,6 +55,8 @@ public final class Replayer implements AutoCloseable {
     static final String TRAFFIC = "rwe.ModuleTraffic";
     /** The schema of ground-truth messages. */
     static final String GROUND_TRUTH = "rwe.GroundTruth";
+    /** The schema of the safety layer's stop records. */
+    static final String STOP_RECORD = "rwe.StopRecord";
 
     /**
      * How to play.
@@ -130,20 +134,20 @@ public final class Replayer implements AutoCloseable {
                     }
                 } else if (record instanceof Message message) {
                     String schema = channelSchemas.getOrDefault(message.channelId(), "");
-                    if (!schema.equals(TRAFFIC) && !schema.equals(GROUND_TRUTH)) {
+                    if (!playable(schema)) {
                         continue;
                     }
                     playable++;
                     first = Math.min(first, message.logTime());
                     last = Math.max(last, message.logTime());
-                    if (recorded == null) {
+                    if (recorded == null && !schema.equals(STOP_RECORD)) {
                         learn(schema, message, modules, robots);
                     }
                 }
             }
             if (playable == 0) {
-                throw new McapFormatException(file + " holds no messages to replay (rwe.ModuleTraffic or"
-                        + " rwe.GroundTruth): it was not written by rwe record");
+                throw new McapFormatException(file + " holds no messages to replay (rwe.ModuleTraffic,"
+                        + " rwe.GroundTruth or rwe.StopRecord): it was not written by rwe record");
             }
             WorldLayout layout = recorded != null ? recorded : inferred(file, modules, robots);
             return new Replayer(reader, layout, worldXml, playable, first, last);
@@ -276,7 +280,7 @@ public final class Replayer implements AutoCloseable {
                 continue;
             }
             String schema = channelSchemas.getOrDefault(message.channelId(), "");
-            if (!schema.equals(TRAFFIC) && !schema.equals(GROUND_TRUTH)) {
+            if (!playable(schema)) {
                 continue;
             }
             long due = startNanos + (long) ((message.logTime() - firstTime) / rate);
@@ -287,6 +291,9 @@ public final class Replayer implements AutoCloseable {
                 JsonNode json = TrafficJson.parse(message.data());
                 if (schema.equals(TRAFFIC)) {
                     playTraffic(containers, TrafficJson.traffic(json), json, inQueue);
+                } else if (schema.equals(STOP_RECORD)) {
+                    containers.space.shift(containers.stops(), Timeout.ofMillis(5_000),
+                            SafetyTelemetry.stopRecord(json).toTuple());
                 } else {
                     GroundTruth frame = TrafficJson.groundTruth(json, Instant.ofEpochSecond(0, message.logTime()));
                     containers.space.shift(containers.groundTruth(frame.robot()), Timeout.ofMillis(5_000),
@@ -300,6 +307,10 @@ public final class Replayer implements AutoCloseable {
                     length(), pass, skipped));
         }
         return true;
+    }
+
+    private static boolean playable(String schema) {
+        return schema.equals(TRAFFIC) || schema.equals(GROUND_TRUTH) || schema.equals(STOP_RECORD);
     }
 
     private static void playTraffic(Containers containers, TrafficJson.Traffic traffic, JsonNode json,
@@ -372,6 +383,10 @@ public final class Replayer implements AutoCloseable {
 
         ContainerRef groundTruth(String robot) {
             return get(GroundTruthTuples.containerSpec(robot));
+        }
+
+        ContainerRef stops() {
+            return get(SafetyContainers.stopsSpec());
         }
 
         private ContainerRef get(ContainerSpec spec) {

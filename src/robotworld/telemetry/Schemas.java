@@ -13,7 +13,7 @@ public final class Schemas {
 
     /** Every schema name there is. */
     public static final List<String> NAMES = List.of("rwe.ModuleTraffic", "rwe.Liveness", "rwe.ActuatorStopped",
-            "rwe.Gap", "rwe.GroundTruth", "foxglove.SceneUpdate", "foxglove.FrameTransforms", "foxglove.PoseInFrame",
+            "rwe.Gap", "rwe.StopRecord", "rwe.Heartbeat", "rwe.GroundTruth", "foxglove.SceneUpdate", "foxglove.FrameTransforms", "foxglove.PoseInFrame",
             "foxglove.LaserScan");
 
     private static final Map<String, String> TEXTS = new ConcurrentHashMap<>();

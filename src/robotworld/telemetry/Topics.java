@@ -14,6 +14,10 @@ public final class Topics {
     public static final Topic STOPS = new Topic("/rwe/stops", "rwe.ActuatorStopped");
     /** Events that may be missing. */
     public static final Topic GAPS = new Topic("/rwe/gaps", "rwe.Gap");
+    /** Stop records of the safety layer: every actuator put into its safe state, and why. */
+    public static final Topic STOP_RECORDS = new Topic("/rwe/stop_records", "rwe.StopRecord");
+    /** Heartbeats of the programs (safety layer). */
+    public static final Topic HEARTBEATS = new Topic("/rwe/heartbeats", "rwe.Heartbeat");
     /** Where each robot is in the arena, as a transform tree. */
     public static final Topic TRANSFORMS = new Topic("/tf", "foxglove.FrameTransforms");
     /** The frame every robot moves in. */
@@ -48,7 +52,8 @@ public final class Topics {
     }
 
     /**
-     * The topics known before anything happens: every module's, liveness, stops, gaps, and each robot's ground
+     * The topics known before anything happens: every module's, liveness, stops, gaps, stop records, heartbeats,
+     * and each robot's ground
      * truth, scene, pose and the transforms. (IR topics appear with the first frame that has rays.)
      */
     public static List<Topic> known(WorldLayout layout) {
@@ -59,6 +64,8 @@ public final class Topics {
         topics.add(LIVENESS);
         topics.add(STOPS);
         topics.add(GAPS);
+        topics.add(STOP_RECORDS);
+        topics.add(HEARTBEATS);
         List<String> robots = layout.robots().toList();
         for (String robot : robots) {
             topics.add(groundTruth(robot));

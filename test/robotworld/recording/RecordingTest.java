@@ -290,6 +290,60 @@ class RecordingTest {
         return traffic.stream().filter(line -> line.startsWith(prefix)).toList();
     }
 
+    @Test
+    void stopRecordsAndHeartbeatsAreRecordedAndTheStopsReplay() throws Exception {
+        Path file = temp.resolve("stops.mcap");
+        robotworld.safety.StopRecord stop = new robotworld.safety.StopRecord(java.time.Instant.ofEpochMilli(
+                1_764_000_000_123L), "SimBot", "Motor", robotworld.safety.StopCause.COMMANDER_SILENT,
+                "laptop#k3x9 silent for 512 ms", "motors 1-8 set to 0", "robot-pc#q1w2", "laptop#k3x9", "");
+        try (EmbeddedSpace live = EmbeddedSpace.open()) {
+            Recorder recorder = Recorder.start(file, new Recorder.Start(SimWorld.LAYOUT, "embedded", null),
+                    Recorder.Options.defaults());
+            WorldTap tap = new WorldTap(live, SimWorld.LAYOUT).add(recorder.observer()).start();
+            robotworld.telemetry.SafetyTelemetry safety = robotworld.telemetry.SafetyTelemetry.start(live,
+                    recorder::offer);
+            live.shift(robotworld.safety.SafetyContainers.liveness(live), robotworld.space.Timeout.TRY_ONCE,
+                    List.of(robotworld.space.Item.keyed("robot-pc#q1w2", new robotworld.safety.Heartbeat(
+                            "robot-pc#q1w2", "robot-pc", List.of(new robotworld.safety.Heartbeat.ModuleName("SimBot",
+                            "Motor")), false, 42, 100, 1_764_000_000_000L).toTuple())));
+            live.shift(robotworld.safety.SafetyContainers.stops(live), robotworld.space.Timeout.TRY_ONCE,
+                    stop.toTuple());
+            waitFor(() -> recorder.status().messages() >= 2);
+            safety.close();
+            tap.close();
+            recorder.close();
+        }
+        List<String> topics = new ArrayList<>();
+        try (McapReader reader = McapReader.open(file)) {
+            Map<Integer, String> topicOf = new HashMap<>();
+            reader.summary().orElseThrow().channels().forEach(c -> topicOf.put(c.id(), c.topic()));
+            McapReader.Cursor cursor = reader.cursor();
+            for (DataRecord record = cursor.next(); record != null; record = cursor.next()) {
+                if (record instanceof Message m) {
+                    topics.add(topicOf.get(m.channelId()) + " " + m.text());
+                }
+            }
+        }
+        assertTrue(topics.stream().anyMatch(t -> t.startsWith("/rwe/heartbeats ") && t.contains("\"sequence\":42")
+                && t.contains("SimBot/Motor")), topics.toString());
+        assertTrue(topics.stream().anyMatch(t -> t.startsWith("/rwe/stop_records ")
+                && t.contains("\"cause\":\"commander-silent\"")), topics.toString());
+
+        List<robotworld.safety.StopRecord> replayed = new CopyOnWriteArrayList<>();
+        try (EmbeddedSpace space = EmbeddedSpace.open(); Replayer replayer = Replayer.open(file)) {
+            Replayer.Options options = new Replayer.Options(10, false);
+            replayer.prepare(space, options);
+            robotworld.safety.StopWatcher watcher = robotworld.safety.StopWatcher.start(space, replayed::add);
+            try {
+                replayer.play(space, options, progress -> { });
+                waitFor(() -> !replayed.isEmpty());
+            } finally {
+                watcher.close();
+            }
+        }
+        assertEquals(stop, replayed.get(0));
+    }
+
     /** What a tap delivered: module traffic as "Module request|answer <tuple>", frames, the replay mark. */
     static final class Collected implements WorldObserver {
         final List<String> traffic = new CopyOnWriteArrayList<>();

@@ -25,6 +25,7 @@ import robotworld.observe.WorldLayout;
 import robotworld.observe.WorldTap;
 import robotworld.space.Capi;
 import robotworld.space.SpaceException;
+import robotworld.telemetry.SafetyTelemetry;
 
 /**
  * {@code rwe bridge WORLD [--port P]}: a Foxglove WebSocket endpoint showing a running world live, until Ctrl-C.
@@ -88,8 +89,10 @@ final class BridgeCommand implements Callable<Integer> {
         try (Capi connection = MonitorSpace.open(url);
              FoxgloveBridge bridge = FoxgloveBridge.start(layout, options)) {
             WorldTap tap = new WorldTap(connection, layout).add(bridge.observer());
+            SafetyTelemetry safety = null;
             try {
                 tap.start();
+                safety = SafetyTelemetry.start(connection, bridge::publish);
                 out.println("Foxglove endpoint for " + layout.world() + " at " + bridge.uri()
                         + (token != null ? " (token required: add ?token=<token> to the URL)" : ""));
                 out.println("watching " + layout.modules().size() + " modules in the space at " + url);
@@ -106,6 +109,9 @@ final class BridgeCommand implements Callable<Integer> {
                 return 1;
             } finally {
                 tap.close();
+                if (safety != null) {
+                    safety.close();
+                }
             }
             out.println("Foxglove endpoint stopped after " + bridge.published() + " messages"
                     + (bridge.dropped() > 0 ? " (" + bridge.dropped() + " dropped for slow clients)" : ""));

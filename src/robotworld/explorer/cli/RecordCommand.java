@@ -28,6 +28,7 @@ import robotworld.recording.RecordingInfo;
 import robotworld.recording.mcap.McapFormatException;
 import robotworld.space.Capi;
 import robotworld.space.SpaceException;
+import robotworld.telemetry.SafetyTelemetry;
 
 /**
  * {@code rwe record WORLD --out FILE.mcap [--duration S]}: records a running world's traffic as MCAP, with a
@@ -112,8 +113,10 @@ final class RecordCommand implements Callable<Integer> {
         try (Capi connection = MonitorSpace.open(url)) {
             WorldTap tap = new WorldTap(connection, layout);
             tap.add(recorder.observer());
+            SafetyTelemetry safety = null;
             try {
                 tap.start();
+                safety = SafetyTelemetry.start(connection, recorder::offer);
             } catch (SpaceException e) {
                 tap.close();
                 recorder.close("the space could not be watched");
@@ -143,6 +146,7 @@ final class RecordCommand implements Callable<Integer> {
                 recorder.close(why);
             } finally {
                 tap.close();
+                safety.close();
                 finished.countDown();
                 try {
                     Runtime.getRuntime().removeShutdownHook(hook);

@@ -31,6 +31,7 @@ import robotworld.observe.WorldTap;
 import robotworld.recording.Replayer;
 import robotworld.recording.mcap.McapFormatException;
 import robotworld.space.server.SpaceServer;
+import robotworld.telemetry.SafetyTelemetry;
 
 /**
  * {@code rwe replay FILE.mcap [--rate R] [--loop]}: plays a recording into a space of its own, so monitors and
@@ -149,6 +150,7 @@ final class ReplayCommand implements Callable<Integer> {
         }
         FoxgloveBridge bridge = null;
         WorldTap bridgeTap = null;
+        SafetyTelemetry bridgeSafety = null;
         ConsoleMonitor consoleMonitor = null;
         AtomicReference<WorldMonitor> windowMonitor = new AtomicReference<>();
         Thread player = Thread.currentThread();
@@ -168,6 +170,7 @@ final class ReplayCommand implements Callable<Integer> {
                 bridge = FoxgloveBridge.start(replayer.layout(), FoxgloveBridge.Options.defaults().port(foxglovePort)
                         .bindAddress(bind).token(token));
                 bridgeTap = new WorldTap(server.space(), replayer.layout()).add(bridge.observer()).start();
+                bridgeSafety = SafetyTelemetry.start(server.space(), bridge::publish);
                 out.println("Foxglove endpoint at " + bridge.uri());
             }
             if (console) {
@@ -218,6 +221,9 @@ final class ReplayCommand implements Callable<Integer> {
             }
             if (bridgeTap != null) {
                 bridgeTap.close();
+            }
+            if (bridgeSafety != null) {
+                bridgeSafety.close();
             }
             if (bridge != null) {
                 bridge.close();

@@ -12,6 +12,7 @@ import robotworld.recording.Recorder;
 import robotworld.sim.robot.GroundTruthFeed;
 import robotworld.sim.robot.SimulatedRobot;
 import robotworld.space.Capi;
+import robotworld.telemetry.SafetyTelemetry;
 
 /** The demo's optional recording ({@code rwe demo --record FILE}): the robot's ground truth and a recorder. */
 final class DemoRecording {
@@ -19,12 +20,14 @@ final class DemoRecording {
     private final Capi space;
     private final GroundTruthFeed feed;
     private final WorldTap tap;
+    private final SafetyTelemetry safety;
     private final Recorder recorder;
 
-    private DemoRecording(Capi space, GroundTruthFeed feed, WorldTap tap, Recorder recorder) {
+    private DemoRecording(Capi space, GroundTruthFeed feed, WorldTap tap, SafetyTelemetry safety, Recorder recorder) {
         this.space = space;
         this.feed = feed;
         this.tap = tap;
+        this.safety = safety;
         this.recorder = recorder;
     }
 
@@ -40,8 +43,10 @@ final class DemoRecording {
         Capi space = MonitorSpace.open(spaceUrl);
         GroundTruthFeed feed = GroundTruthFeed.start(robot, Demo.ROBOT, space, GroundTruthFeed.DEFAULT_PERIOD);
         WorldTap tap = new WorldTap(space, layout).add(recorder.observer());
+        SafetyTelemetry safety;
         try {
             tap.start();
+            safety = SafetyTelemetry.start(space, recorder::offer);
         } catch (RuntimeException e) {
             tap.close();
             feed.close();
@@ -49,12 +54,13 @@ final class DemoRecording {
             space.close();
             throw e;
         }
-        return new DemoRecording(space, feed, tap, recorder);
+        return new DemoRecording(space, feed, tap, safety, recorder);
     }
 
     /** Stops and finishes the file; says what was recorded. */
     String close() throws IOException {
         tap.close();
+        safety.close();
         feed.close();
         recorder.close("the demo ended");
         space.close();
