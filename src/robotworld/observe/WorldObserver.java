@@ -27,6 +27,13 @@ public interface WorldObserver {
     default void groundTruth(GroundTruth frame) {
     }
 
+    /**
+     * The space replays a recording ({@code rwe replay}): what follows happened earlier, not now, and no hardware
+     * is driven. Called once, before the first event, when the tap finds the space's {@link ReplayMark}.
+     */
+    default void replay(ReplayMark mark) {
+    }
+
     /** Events may be missing (or watching ended): what an observer shows may be incomplete until the next one. */
     default void gap(Gap gap) {
     }

@@ -146,6 +146,11 @@ public final class WorldTap implements AutoCloseable {
         dispatcher.start();
         SpaceException first = null;
         try {
+            try {
+                ReplayMark.find(space).ifPresent(mark -> post(() -> each(observer -> observer.replay(mark))));
+            } catch (SpaceException e) {
+                LOG.debug("cannot tell whether {} replays a recording: {}", layout.world(), e.getMessage());
+            }
             for (ModuleRef module : modules.keySet()) {
                 try {
                     watchModule(module);

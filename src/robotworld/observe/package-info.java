@@ -29,6 +29,9 @@
  *       request to it has waited longer than the liveness window, and
  *       {@link robotworld.observe.Liveness.State#UNKNOWN} while it is quiet (nothing says whether it runs). The
  *       tap reports each change.</li>
+ *   <li>Replays: a space into which {@code rwe replay} plays a recording holds a {@link robotworld.observe.ReplayMark};
+ *       the tap hands it to {@link robotworld.observe.WorldObserver#replay} before any event, and every view
+ *       marks what it shows as a replay.</li>
  * </ul>
  *
  * <p>This package does not depend on Swing or on description files: a world is given as a

@@ -45,6 +45,10 @@ final class DemoCommand implements Callable<Integer> {
             + "and show the robot stopping by itself (docs/safety.md)")
     private boolean killControl;
 
+    @Option(names = "--record", paramLabel = "FILE.mcap",
+            description = "record the world's traffic into FILE.mcap (see docs/recording.md)")
+    private Path record;
+
     @Spec
     private CommandSpec spec;
 
@@ -54,7 +58,7 @@ final class DemoCommand implements Callable<Integer> {
         DemoOptions options;
         try {
             options = new DemoOptions(Duration.ofMillis(Math.round(seconds * 1000)), Viewpoint.parse(viewpoint),
-                    out, console, DemoOptions.defaultHome(), killControl);
+                    out, console, DemoOptions.defaultHome(), killControl).recording(record);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

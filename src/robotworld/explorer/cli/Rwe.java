@@ -17,8 +17,8 @@ import robotworld.explorer.RobotWorldExplorer;
 @Command(name = "rwe", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "RobotWorldExplorer: describe robots and environments, generate and run control frameworks.",
         subcommands = {ValidateCommand.class, ExploreCommand.class, GenerateCommand.class, SimulateCommand.class,
-                SpaceCommand.class, MonitorCommand.class, StopCommand.class, DemoCommand.class,
-                CommandLine.HelpCommand.class})
+                SpaceCommand.class, MonitorCommand.class, StopCommand.class, DemoCommand.class, RecordCommand.class,
+                ReplayCommand.class, BridgeCommand.class, CommandLine.HelpCommand.class})
 public final class Rwe implements Callable<Integer> {
 
     @Spec

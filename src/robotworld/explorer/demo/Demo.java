@@ -270,6 +270,43 @@ public final class Demo {
         });
 
         MonitoredWorld monitored = MonitoredWorld.of(world);
+        DemoRecording recording = null;
+        if (options.record() != null) {
+            recording = DemoRecording.start(options.record(), monitored, summary.world, spaceUrl, sims.robot);
+            say("recording the world's traffic (and the robot's ground truth) into " + options.record());
+        }
+        try {
+            monitorAndRun(monitored, programs, spaceUrl, sims, generated, robotControls);
+        } finally {
+            if (recording != null) {
+                say(recording.close());
+            }
+        }
+        step("checking the outcome", () -> {
+            List<String> problems = new ArrayList<>();
+            if (summary.distanceMoved() < 20) {
+                problems.add("the robot did not move");
+            }
+            if (summary.bumps < 1) {
+                problems.add("no bump happened");
+            }
+            if (summary.lampOnFrames < 1 || summary.lampOffFrames < 1) {
+                problems.add("the lamp was not switched on and off at the CM11A");
+            }
+            if (summary.monitorAnswers < 1) {
+                problems.add("the monitor received nothing");
+            }
+            if (!problems.isEmpty()) {
+                throw new IllegalStateException(String.join("; ", problems));
+            }
+            say("robot moved, bumped, lamp switched, monitor saw it");
+            return null;
+        });
+    }
+
+    /** Monitors the world (console tally, and windows on a desktop) while the programs run. */
+    private void monitorAndRun(MonitoredWorld monitored, List<ProgramProcess> programs, String spaceUrl,
+            Simulators sims, GenerationResult[] generated, boolean robotControls) throws Exception {
         boolean windows = !options.console() && !GraphicsEnvironment.isHeadless();
         MonitorTally tally = new MonitorTally(windows ? null : out());
         try (Capi monitorSpace = MonitorSpace.open(spaceUrl)) {

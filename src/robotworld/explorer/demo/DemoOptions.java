@@ -13,13 +13,24 @@ import java.util.Objects;
  * @param console   console monitor even when a display is available
  * @param home      the RobotWorldExplorer home (ModuleDescriptions/, docs/examples/)
  * @param killControl kill the control program (SIGKILL) while the robot drives, and show the robot stopping
+ * @param record    an MCAP file to record the world's traffic into, or null for none
  */
 public record DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home,
-                          boolean killControl) {
+                          boolean killControl, Path record) {
 
-    /** The demo without the kill. */
+    /** The demo without the kill and without a recording. */
     public DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home) {
-        this(run, viewpoint, out, console, home, false);
+        this(run, viewpoint, out, console, home, false, null);
+    }
+
+    /** The demo, with or without the kill, without a recording. */
+    public DemoOptions(Duration run, Viewpoint viewpoint, Path out, boolean console, Path home, boolean killControl) {
+        this(run, viewpoint, out, console, home, killControl, null);
+    }
+
+    /** The same, recording into {@code file} (null: none). */
+    public DemoOptions recording(Path file) {
+        return new DemoOptions(run, viewpoint, out, console, home, killControl, file);
     }
 
     public DemoOptions {

@@ -13,6 +13,7 @@ import robotworld.explorer.monitor.logic.xvsm.AnswerText;
 import robotworld.explorer.monitor.logic.xvsm.AnswerWatcher;
 import robotworld.safety.StopRecord;
 import robotworld.safety.StopWatcher;
+import robotworld.observe.ReplayMark;
 import robotworld.space.Capi;
 import robotworld.xvsm.CallTuple;
 
@@ -38,6 +39,7 @@ public final class ConsoleMonitor implements AutoCloseable {
      */
     public ConsoleMonitor(MonitoredWorld world, Capi space, PrintWriter out) {
         this.out = out;
+        ReplayMark.find(space).ifPresent(mark -> print("# " + mark.label() + ": a recorded run; nothing is driven"));
         try {
             for (MonitoredParticipant participant : world.participants()) {
                 for (MonitoredModule module : participant.modules()) {

@@ -4,8 +4,10 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import javax.swing.JComponent;
+import javax.swing.SwingUtilities;
 import robotworld.explorer.monitor.gui.ParticipantWindow;
 import robotworld.explorer.stop.StopButton;
+import robotworld.observe.ReplayMark;
 import robotworld.safety.StopRecord;
 import robotworld.safety.StopWatcher;
 import robotworld.space.Capi;
@@ -45,6 +47,21 @@ public final class WorldMonitor implements AutoCloseable {
             windows.add(window);
         }
         watchStops(space);
+        markReplay(space);
+    }
+
+    /** A replayed run says so in every window's title (looked up off the Swing thread: it asks the space). */
+    private void markReplay(Capi space) {
+        Thread lookup = new Thread(() -> {
+            try {
+                ReplayMark.find(space).ifPresent(mark -> SwingUtilities.invokeLater(() -> windows.forEach(
+                        window -> window.setTitle(mark.label() + " - " + window.getTitle()))));
+            } catch (RuntimeException e) {
+                // the monitors report an unreachable space on their panels
+            }
+        }, "monitor-replay-mark");
+        lookup.setDaemon(true);
+        lookup.start();
     }
 
     /** Watches the stop records in the background (the Swing thread never waits for the network). */

@@ -1,0 +1,107 @@
+package robotworld.explorer.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robotworld.space.ContainerRef;
+import robotworld.space.ContainerSpec;
+import robotworld.space.EmbeddedSpace;
+import robotworld.space.Item;
+import robotworld.space.Order;
+import robotworld.space.Timeout;
+import robotworld.space.server.SpaceServer;
+import robotworld.testsupport.ProjectFiles;
+import robotworld.xvsm.CallTuple;
+
+/** rwe record, rwe record --info and rwe replay as a person runs them. */
+class RecordReplayCommandTest {
+
+    private final StringWriter out = new StringWriter();
+    private final StringWriter err = new StringWriter();
+
+    @TempDir
+    Path folder;
+
+    private int rwe(String... args) {
+        return Rwe.run(new PrintWriter(out, true), new PrintWriter(err, true), args);
+    }
+
+    @Test
+    void recordsAWorldForADurationDescribesTheFileAndReplaysItToTheConsole() throws Exception {
+        Path world = ProjectFiles.resolve("docs/examples/chapter5-world.xml");
+        Path file = folder.resolve("run.mcap");
+        try (EmbeddedSpace data = EmbeddedSpace.open();
+             SpaceServer server = SpaceServer.start(data, SpaceServer.Options.defaults().port(0)
+                     .stopGraceMillis(200))) {
+            CompletableFuture<Integer> recording = CompletableFuture.supplyAsync(() -> rwe("record",
+                    world.toString(), "--out", file.toString(), "--duration", "3", "--space",
+                    server.uri().toString()));
+            long deadline = System.nanoTime() + 30_000_000_000L;
+            while (!err.toString().contains("recording 3 modules")) {
+                assertTrue(System.nanoTime() < deadline && !recording.isDone(), "not recording: " + out + err);
+                Thread.sleep(10);
+            }
+            // the robot's program publishes two local calls, as its Local side does
+            ContainerRef answers = data.lookupOrCreateContainer(ContainerSpec.of(Order.LIFO).withKeyView()
+                    .unbounded().named("CaterpillarRobotMotor-ControllerANSWER"));
+            data.shift(answers, Timeout.TRY_ONCE, List.of(Item.keyed("robot-laptop",
+                    CallTuple.of("robot-laptop", "setMotor", 1, 500).toTuple())));
+            Thread.sleep(200);
+            data.shift(answers, Timeout.TRY_ONCE, List.of(Item.keyed("robot-laptop",
+                    CallTuple.of("robot-laptop", "setMotor", 1, 0).toTuple())));
+            assertEquals(0, recording.get(60, TimeUnit.SECONDS), err.toString());
+        }
+        assertTrue(out.toString().contains("recorded ") && out.toString().contains("nothing dropped"), out.toString());
+        assertTrue(Files.size(file) > 0);
+
+        out.getBuffer().setLength(0);
+        assertEquals(0, rwe("record", "--info", file.toString()), err.toString());
+        String info = out.toString();
+        assertTrue(info.contains("finished MCAP file"), info);
+        assertTrue(info.contains("world        Chapter5World"), info);
+        assertTrue(info.matches("(?s).*/CaterpillarRobot/Motor-Controller\\s+rwe.ModuleTraffic\\s+json\\s+2\\n.*"),
+                info);
+        assertTrue(info.contains("/rwe/liveness") && info.contains("ended: --duration reached"), info);
+        assertTrue(info.contains("attachments  rwe-layout.json") && info.contains("world.xml"), info);
+
+        out.getBuffer().setLength(0);
+        assertEquals(0, rwe("replay", file.toString(), "--console", "--foxglove-port", "-1", "--rate", "4", "-q"),
+                err.toString());
+        String replay = out.toString();
+        assertTrue(replay.contains("# REPLAY of run.mcap"), replay);
+        assertTrue(replay.matches("(?s).*CaterpillarRobot\\s+Motor-Controller\\s+setMotor\\s+.*500.*"), replay);
+        assertTrue(replay.contains("replay space at http://127.0.0.1:"), replay);
+    }
+
+    @Test
+    void mistakesGetOneLineNamingTheFix() throws Exception {
+        Path notMcap = folder.resolve("notes.mcap");
+        Files.writeString(notMcap, "not a recording");
+        assertEquals(1, rwe("record", "--info", notMcap.toString()));
+        assertTrue(err.toString().contains("is not an MCAP file"), err.toString());
+        assertEquals(1, rwe("replay", folder.resolve("missing.mcap").toString()));
+        assertTrue(err.toString().contains("no such file"), err.toString());
+        assertEquals(2, rwe("record", "--out", folder.resolve("x.mcap").toString()));
+        assertTrue(err.toString().contains("give WORLD and --out"), err.toString());
+        assertEquals(2, rwe("replay", notMcap.toString(), "--rate", "0"));
+        assertTrue(err.toString().contains("--rate"), err.toString());
+        err.getBuffer().setLength(0);
+        // a world whose space is not there
+        int code = rwe("record", ProjectFiles.resolve("docs/examples/chapter5-world.xml").toString(), "--out",
+                folder.resolve("y.mcap").toString(), "--space", "http://127.0.0.1:9/space", "--duration", "1");
+        assertEquals(1, code, out + "" + err);
+        assertTrue(err.toString().contains("rwe record: cannot") && err.toString().contains("--space URL"),
+                err.toString());
+        assertTrue(!Files.exists(folder.resolve("y.mcap")), "nothing recorded, nothing left behind");
+        assertTrue(!err.toString().contains("\tat "), "no stack trace: " + err);
+    }
+}
