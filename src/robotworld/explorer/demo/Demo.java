@@ -287,10 +287,14 @@ public final class Demo {
             if (summary.distanceMoved() < 20) {
                 problems.add("the robot did not move");
             }
-            if (summary.bumps < 1) {
+            if (options.killControl()) {
+                if (summary.kill == null || summary.kill.millisToZero() < 0) {
+                    problems.add("the robot did not stop after its control program was killed");
+                }
+            } else if (summary.bumps < 1) {
                 problems.add("no bump happened");
             }
-            if (summary.lampOnFrames < 1 || summary.lampOffFrames < 1) {
+            if (!options.killControl() && (summary.lampOnFrames < 1 || summary.lampOffFrames < 1)) {
                 problems.add("the lamp was not switched on and off at the CM11A");
             }
             if (summary.monitorAnswers < 1) {
@@ -299,7 +303,8 @@ public final class Demo {
             if (!problems.isEmpty()) {
                 throw new IllegalStateException(String.join("; ", problems));
             }
-            say("robot moved, bumped, lamp switched, monitor saw it");
+            say(options.killControl() ? "robot moved, stopped by itself when its control program was killed, monitor "
+                    + "saw it" : "robot moved, bumped, lamp switched, monitor saw it");
             return null;
         });
     }
@@ -337,31 +342,6 @@ public final class Demo {
                 summary.endPose = sims.robot.pose();
             }
         }
-        step("checking the outcome", () -> {
-            List<String> problems = new ArrayList<>();
-            if (summary.distanceMoved() < 20) {
-                problems.add("the robot did not move");
-            }
-            if (options.killControl()) {
-                if (summary.kill == null || summary.kill.millisToZero() < 0) {
-                    problems.add("the robot did not stop after its control program was killed");
-                }
-            } else if (summary.bumps < 1) {
-                problems.add("no bump happened");
-            }
-            if (!options.killControl() && (summary.lampOnFrames < 1 || summary.lampOffFrames < 1)) {
-                problems.add("the lamp was not switched on and off at the CM11A");
-            }
-            if (summary.monitorAnswers < 1) {
-                problems.add("the monitor received nothing");
-            }
-            if (!problems.isEmpty()) {
-                throw new IllegalStateException(String.join("; ", problems));
-            }
-            say(options.killControl() ? "robot moved, stopped by itself when its control program was killed, monitor "
-                    + "saw it" : "robot moved, bumped, lamp switched, monitor saw it");
-            return null;
-        });
     }
 
     private PrintWriter out() {
