@@ -1,6 +1,5 @@
 package robotworld.explorer.cli;
 
-import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
@@ -47,7 +46,7 @@ public final class Rwe implements Callable<Integer> {
     /** No verb: the launcher on a desktop; otherwise the usage, as before, with exit code 2. */
     @Override
     public Integer call() throws InterruptedException {
-        if (!GraphicsEnvironment.isHeadless()) {
+        if (robotworld.explorer.monitor.gui.Display.usable()) {
             RobotWorldExplorer.showAndWait();
             return 0;
         }

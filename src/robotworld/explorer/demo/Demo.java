@@ -1,6 +1,5 @@
 package robotworld.explorer.demo;
 
-import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,6 +29,8 @@ import robotworld.explorer.monitor.MonitorLoader;
 import robotworld.explorer.monitor.MonitorSpace;
 import robotworld.explorer.monitor.MonitoredWorld;
 import robotworld.explorer.monitor.WorldMonitor;
+import robotworld.explorer.monitor.gui.Display;
+import robotworld.explorer.monitor.gui.LayoutMemory;
 import robotworld.sim.Cm11aTiming;
 import robotworld.sim.SimulatedCm11a;
 import robotworld.safety.SafetyContainers;
@@ -38,6 +39,7 @@ import robotworld.safety.StopRecord;
 import robotworld.sim.robot.Pose;
 import robotworld.sim.robot.SimModule;
 import robotworld.sim.robot.SimMotorModule;
+import robotworld.sim.robot.GroundTruthFeed;
 import robotworld.sim.robot.SimulatedRobot;
 import robotworld.space.Capi;
 import robotworld.space.Entry;
@@ -155,7 +157,11 @@ public final class Demo {
             String spaceUrl = space.uri().toString();
             Simulators simulators = step("starting a simulated robot (motor + bumper modules in an arena) and a "
                     + "simulated CM11A with an X10 appliance module at A3", () -> Simulators.start(home, this));
-            try (simulators) {
+            try (simulators;
+                 GroundTruthFeed groundTruth = GroundTruthFeed.start(simulators.robot, ROBOT, space.space(),
+                         GroundTruthFeed.DEFAULT_PERIOD)) {
+                say("the robot's ground truth goes to " + groundTruth.containerName() + " for the monitor's world "
+                        + "view");
                 runWithSimulators(out, programs, spaceUrl, simulators);
             }
         }
@@ -272,7 +278,7 @@ public final class Demo {
         MonitoredWorld monitored = MonitoredWorld.of(world);
         DemoRecording recording = null;
         if (options.record() != null) {
-            recording = DemoRecording.start(options.record(), monitored, summary.world, spaceUrl, sims.robot);
+            recording = DemoRecording.start(options.record(), monitored, summary.world, spaceUrl);
             say("recording the world's traffic (and the robot's ground truth) into " + options.record());
         }
         try {
@@ -312,7 +318,10 @@ public final class Demo {
     /** Monitors the world (console tally, and windows on a desktop) while the programs run. */
     private void monitorAndRun(MonitoredWorld monitored, List<ProgramProcess> programs, String spaceUrl,
             Simulators sims, GenerationResult[] generated, boolean robotControls) throws Exception {
-        boolean windows = !options.console() && !GraphicsEnvironment.isHeadless();
+        boolean windows = !options.console() && Display.usable();
+        if (!options.console() && !windows) {
+            say("no monitor window: " + Display.problem() + "; the console monitor shows the run instead");
+        }
         MonitorTally tally = new MonitorTally(windows ? null : out());
         try (Capi monitorSpace = MonitorSpace.open(spaceUrl)) {
             ConsoleMonitor console = step("monitoring all " + monitored.moduleCount() + " modules: "
@@ -321,10 +330,17 @@ public final class Demo {
             WorldMonitor[] worldMonitor = new WorldMonitor[1];
             try (console) {
                 if (windows) {
-                    SwingUtilities.invokeAndWait(() -> {
-                        worldMonitor[0] = new WorldMonitor(monitored, monitorSpace, new MonitorLoader());
-                        worldMonitor[0].show();
-                    });
+                    try {
+                        SwingUtilities.invokeAndWait(() -> {
+                            worldMonitor[0] = new WorldMonitor(monitored, monitorSpace, new MonitorLoader(),
+                                    WorldMonitor.Windows.ONE, LayoutMemory.fromSettings());
+                            worldMonitor[0].show();
+                        });
+                    } catch (java.lang.reflect.InvocationTargetException | Error e) {
+                        Throwable cause = e instanceof java.lang.reflect.InvocationTargetException i ? i.getCause() : e;
+                        say("no monitor window (" + cause + "); the console monitor shows the run instead");
+                        tally.echoTo(out());
+                    }
                 }
                 runPrograms(programs, spaceUrl, sims, generated, robotControls);
                 checkSafeState(programs, sims, monitorSpace);

@@ -9,30 +9,29 @@ import robotworld.explorer.monitor.WorldLayouts;
 import robotworld.observe.WorldLayout;
 import robotworld.observe.WorldTap;
 import robotworld.recording.Recorder;
-import robotworld.sim.robot.GroundTruthFeed;
-import robotworld.sim.robot.SimulatedRobot;
 import robotworld.space.Capi;
 import robotworld.telemetry.SafetyTelemetry;
 
-/** The demo's optional recording ({@code rwe demo --record FILE}): the robot's ground truth and a recorder. */
+/**
+ * The demo's optional recording ({@code rwe demo --record FILE}): a recorder of the world's traffic, including the
+ * robot's ground truth, which the demo always publishes.
+ */
 final class DemoRecording {
 
     private final Capi space;
-    private final GroundTruthFeed feed;
     private final WorldTap tap;
     private final SafetyTelemetry safety;
     private final Recorder recorder;
 
-    private DemoRecording(Capi space, GroundTruthFeed feed, WorldTap tap, SafetyTelemetry safety, Recorder recorder) {
+    private DemoRecording(Capi space, WorldTap tap, SafetyTelemetry safety, Recorder recorder) {
         this.space = space;
-        this.feed = feed;
         this.tap = tap;
         this.safety = safety;
         this.recorder = recorder;
     }
 
-    static DemoRecording start(Path file, MonitoredWorld world, Path description, String spaceUrl,
-            SimulatedRobot robot) throws IOException {
+    static DemoRecording start(Path file, MonitoredWorld world, Path description, String spaceUrl)
+            throws IOException {
         WorldLayout layout = WorldLayouts.of(world);
         Path parent = file.toAbsolutePath().getParent();
         if (parent != null) {
@@ -41,7 +40,6 @@ final class DemoRecording {
         Recorder recorder = Recorder.start(file, new Recorder.Start(layout, spaceUrl, Files.readAllBytes(description)),
                 Recorder.Options.defaults());
         Capi space = MonitorSpace.open(spaceUrl);
-        GroundTruthFeed feed = GroundTruthFeed.start(robot, Demo.ROBOT, space, GroundTruthFeed.DEFAULT_PERIOD);
         WorldTap tap = new WorldTap(space, layout).add(recorder.observer());
         SafetyTelemetry safety;
         try {
@@ -49,19 +47,17 @@ final class DemoRecording {
             safety = SafetyTelemetry.start(space, recorder::offer);
         } catch (RuntimeException e) {
             tap.close();
-            feed.close();
             recorder.close("the space could not be watched");
             space.close();
             throw e;
         }
-        return new DemoRecording(space, feed, tap, safety, recorder);
+        return new DemoRecording(space, tap, safety, recorder);
     }
 
     /** Stops and finishes the file; says what was recorded. */
     String close() throws IOException {
         tap.close();
         safety.close();
-        feed.close();
         recorder.close("the demo ended");
         space.close();
         Recorder.Status status = recorder.status();

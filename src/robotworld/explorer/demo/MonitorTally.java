@@ -16,7 +16,7 @@ final class MonitorTally extends Writer {
     /** A single bumper's answer {@code <number, contact>} with contact 1 or true. */
     private static final java.util.regex.Pattern CONTACT = java.util.regex.Pattern.compile("<\\d+,\\s*(1|true)>");
 
-    private final PrintWriter echo;
+    private volatile PrintWriter echo;
     private final StringBuilder pending = new StringBuilder();
     private final Map<String, String> last = new HashMap<>();
     final AtomicInteger answers = new AtomicInteger();
@@ -86,6 +86,11 @@ final class MonitorTally extends Writer {
             echo.println("  monitor | " + line);
             echo.flush();
         }
+    }
+
+    /** From now on, prints the changed lines to {@code newEcho} (the window could not be opened after all). */
+    void echoTo(PrintWriter newEcho) {
+        echo = newEcho;
     }
 
     @Override

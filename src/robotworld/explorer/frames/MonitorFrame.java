@@ -19,13 +19,14 @@ import robotworld.explorer.monitor.MonitorLoader;
 import robotworld.explorer.monitor.MonitorSpace;
 import robotworld.explorer.monitor.MonitoredWorld;
 import robotworld.explorer.monitor.WorldMonitor;
+import robotworld.explorer.monitor.gui.LayoutMemory;
 import robotworld.explorer.stop.StopButton;
 import robotworld.space.Capi;
 
 /**
  * "Monitor a world": choose a world file and, optionally, the space URL (blank: the override or the world's
- * {@code <SpaceURL>}), then open one monitoring window per participant. Connecting runs off the Swing thread. The
- * STOP button at the top stops every actuator of the chosen world.
+ * {@code <SpaceURL>}), then open the world's monitor window. The
+ * STOP button at the top stops every actuator of the chosen world. Connecting runs off the Swing thread.
  */
 public final class MonitorFrame extends JFrame {
 
@@ -80,11 +81,6 @@ public final class MonitorFrame extends JFrame {
         return stop;
     }
 
-    /** The world monitors opened from this frame. */
-    public List<WorldMonitor> opened() {
-        return List.copyOf(opened);
-    }
-
     /** The world in the fields, for the STOP button; null (and the status says why) when there is none. */
     private StopButton.Scope stopScope() {
         Path file = worldFile.path();
@@ -101,6 +97,11 @@ public final class MonitorFrame extends JFrame {
             status.error("Cannot stop: " + e.getMessage());
         }
         return null;
+    }
+
+    /** The world monitors opened from this frame. */
+    public List<WorldMonitor> opened() {
+        return List.copyOf(opened);
     }
 
     private void start() {
@@ -134,7 +135,8 @@ public final class MonitorFrame extends JFrame {
             protected void done() {
                 start.setEnabled(true);
                 try {
-                    WorldMonitor monitor = new WorldMonitor(world, get(), new MonitorLoader());
+                    WorldMonitor monitor = new WorldMonitor(world, get(), new MonitorLoader(),
+                            WorldMonitor.Windows.ONE, LayoutMemory.fromSettings());
                     opened.add(monitor);
                     monitor.show();
                     status.info("Monitoring " + world.moduleCount() + " modules of " + world.name() + " on " + url);

@@ -3,6 +3,7 @@ package robotworld.explorer.monitor;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;
 import java.util.Objects;
+import robotworld.observe.WorldTap;
 import robotworld.space.Capi;
 
 /**
@@ -32,6 +33,18 @@ public final class MonitorLoader {
      * @return the module's monitor, or a placeholder that explains what is missing
      */
     public Monitor load(MonitoredModule module, Capi space) {
+        return load(module, space, null);
+    }
+
+    /**
+     * The monitor of {@code module}, as one more observer of {@code tap} when its class has a public constructor
+     * {@code (MonitoredModule, WorldTap)} (the tap's owner starts it), else watching through {@code space} on its
+     * own. Call on the Swing event thread.
+     *
+     * @param tap the world's shared tap, or null
+     * @return the module's monitor, or a placeholder that explains what is missing
+     */
+    public Monitor load(MonitoredModule module, Capi space, WorldTap tap) {
         String className = module.monitorClassName();
         Class<?> type;
         try {
@@ -45,6 +58,13 @@ public final class MonitorLoader {
             return new MissingMonitor(module, className, "does not implement " + Monitor.class.getName());
         }
         try {
+            if (tap != null) {
+                try {
+                    return (Monitor) type.getConstructor(MonitoredModule.class, WorldTap.class).newInstance(module, tap);
+                } catch (NoSuchMethodException e) {
+                    // a monitor that watches on its own
+                }
+            }
             Constructor<?> constructor = type.getConstructor(MonitoredModule.class, Capi.class);
             return (Monitor) constructor.newInstance(module, space);
         } catch (NoSuchMethodException e) {

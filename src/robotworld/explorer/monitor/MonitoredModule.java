@@ -37,6 +37,11 @@ public record MonitoredModule(String communicationType, String participant, Stri
                 + communicationType.toUpperCase(Locale.ROOT) + moduleClass + "Monitor";
     }
 
+    /** The module as the tap names it. */
+    public robotworld.observe.ModuleRef ref() {
+        return new robotworld.observe.ModuleRef(participant, moduleName, moduleClass);
+    }
+
     /** {@code Participant/Module}, for messages and log lines. */
     public String label() {
         return participant + "/" + moduleName;

@@ -55,6 +55,47 @@ public record MonitoredWorld(String name, String communicationType, String space
                 participants);
     }
 
+    /** The world as a {@link robotworld.observe.WorldTap} watches it. */
+    public robotworld.observe.WorldLayout layout() {
+        return WorldLayouts.of(this);
+    }
+
+    /**
+     * The same world with only the modules named in {@code names} (a module's {@code <Name>}, or
+     * {@code Participant/Name}); participants left without modules are dropped. No names: the whole world.
+     *
+     * @throws IllegalArgumentException naming what matches no module, and the modules there are
+     */
+    public MonitoredWorld only(java.util.Collection<String> names) {
+        if (names == null || names.isEmpty()) {
+            return this;
+        }
+        java.util.Set<String> unmatched = new java.util.LinkedHashSet<>(names);
+        List<MonitoredParticipant> kept = new ArrayList<>();
+        for (MonitoredParticipant participant : participants) {
+            List<MonitoredModule> modules = new ArrayList<>();
+            for (MonitoredModule module : participant.modules()) {
+                boolean byName = names.contains(module.moduleName());
+                boolean byLabel = names.contains(module.label());
+                if (byName || byLabel) {
+                    modules.add(module);
+                    unmatched.remove(module.moduleName());
+                    unmatched.remove(module.label());
+                }
+            }
+            if (!modules.isEmpty()) {
+                kept.add(new MonitoredParticipant(participant.name(), participant.kind(), modules));
+            }
+        }
+        if (!unmatched.isEmpty()) {
+            List<String> all = participants.stream().flatMap(p -> p.modules().stream()).map(MonitoredModule::label)
+                    .toList();
+            throw new IllegalArgumentException("no module " + String.join(", ", unmatched) + " in " + name
+                    + "; its modules: " + String.join(", ", all));
+        }
+        return new MonitoredWorld(name, communicationType, spaceUrl, kept);
+    }
+
     /** How many modules all participants have together. */
     public int moduleCount() {
         return participants.stream().mapToInt(participant -> participant.modules().size()).sum();

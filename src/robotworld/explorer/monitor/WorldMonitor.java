@@ -3,49 +3,112 @@ package robotworld.explorer.monitor;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import javax.swing.JComponent;
 import javax.swing.SwingUtilities;
+import robotworld.explorer.monitor.gui.LayoutMemory;
+import robotworld.explorer.monitor.gui.MonitorLook;
+import robotworld.explorer.monitor.gui.MonitorWindow;
+import robotworld.explorer.monitor.gui.ParticipantPanel;
 import robotworld.explorer.monitor.gui.ParticipantWindow;
-import robotworld.explorer.stop.StopButton;
+import robotworld.explorer.monitor.gui.PlotsPanel;
+import robotworld.explorer.monitor.gui.StatusStrip;
+import robotworld.explorer.monitor.gui.WorldView;
+import robotworld.observe.AnswerSeen;
+import robotworld.observe.GroundTruth;
 import robotworld.observe.ReplayMark;
+import robotworld.observe.WorldObserver;
+import robotworld.observe.WorldTap;
+import robotworld.explorer.stop.StopButton;
 import robotworld.safety.StopRecord;
 import robotworld.safety.StopWatcher;
 import robotworld.space.Capi;
 import robotworld.space.SpaceException;
 
 /**
- * Monitoring of a whole world in windows (thesis 4.2.4): for each participant a {@link ParticipantWindow} with
- * the panel of every module's monitor, loaded by {@link MonitorLoader}, and the world's STOP button at the top of
- * every window. Stops of the world's actuators ({@link StopRecord}s) reach the modules' monitors, whose panels say
- * why. Swing thread only.
+ * Monitoring of a whole world in windows (thesis 4.2.4, extended): one {@link WorldTap} reads the world's traffic
+ * and feeds the monitor of every module (loaded by {@link MonitorLoader}), the plots, the status strip and the
+ * world view. By default everything is in one {@link MonitorWindow}; the thesis's one window per participant
+ * ({@link ParticipantWindow}) remains available. The world's STOP button is at the top of every window, and stops
+ * of the world's actuators ({@link StopRecord}s) reach the modules' monitors, whose panels say why. Swing thread
+ * only.
  */
 public final class WorldMonitor implements AutoCloseable {
 
+    /** How the monitor is laid out. */
+    public enum Windows {
+        /** One window: world view, plots, a tab per participant, status strip. */
+        ONE,
+        /** One window per participant with its module panels (the thesis's layout). */
+        PER_PARTICIPANT
+    }
+
+    private final WorldTap tap;
+    private final PlotModel plots;
+    private final TrafficStatistics statistics;
+    private final RobotReadings readings;
     private final List<Monitor> monitors = new ArrayList<>();
     private final List<ParticipantWindow> windows = new ArrayList<>();
+    private final MonitorWindow window;
     private final List<StopButton> stopButtons = new ArrayList<>();
-    private final java.util.Map<String, Monitor> byModule = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Map<String, Monitor> byModule = new ConcurrentHashMap<>();
     private volatile StopWatcher stops;
     private volatile boolean closed;
 
-    /** Builds the monitors and windows (not shown yet: see {@link #show()}). */
+    /** One window, remembering nothing: see {@link #WorldMonitor(MonitoredWorld, Capi, MonitorLoader, Windows, LayoutMemory)}. */
     public WorldMonitor(MonitoredWorld world, Capi space, MonitorLoader loader) {
+        this(world, space, loader, Windows.ONE, LayoutMemory.none());
+    }
+
+    /**
+     * Builds the monitors and windows (not shown yet: see {@link #show()}) and starts watching in the background.
+     *
+     * @param memory where the one window's layout is remembered
+     */
+    public WorldMonitor(MonitoredWorld world, Capi space, MonitorLoader loader, Windows layout, LayoutMemory memory) {
+        MonitorLook.install();
+        tap = new WorldTap(space, world.layout());
+        plots = new PlotModel(world.layout());
+        statistics = new TrafficStatistics(world.layout());
+        readings = new RobotReadings(world.layout());
+        tap.add(statistics).add(plots).add(readings);
+        WorldView view = new WorldView(readings);
+        tap.add(new WorldObserver() {
+            @Override
+            public void groundTruth(GroundTruth frame) {
+                view.show(frame);
+            }
+
+            @Override
+            public void answerSeen(AnswerSeen event) {
+                view.readingsChanged();
+            }
+        });
+        List<ParticipantPanel> tabs = new ArrayList<>();
         for (MonitoredParticipant participant : world.participants()) {
             List<JComponent> panels = new ArrayList<>();
             for (MonitoredModule module : participant.modules()) {
-                Monitor monitor = loader.load(module, space);
+                Monitor monitor = loader.load(module, space, tap);
                 monitors.add(monitor);
                 byModule.put(module.label(), monitor);
                 panels.add(monitor.getPanel());
             }
-            ParticipantWindow window = new ParticipantWindow(world.name(), participant.name(), participant.kind(),
-                    panels);
-            StopButton stop = new StopButton("STOP button of the monitor",
-                    () -> new StopButton.Scope(world, space.spaceUri().toString(), space));
-            window.showAtTop(stop);
-            stopButtons.add(stop);
-            windows.add(window);
+            if (layout == Windows.PER_PARTICIPANT) {
+                ParticipantWindow each = new ParticipantWindow(world.name(), participant.name(), participant.kind(),
+                        panels);
+                each.showAtTop(stopButton(world, space));
+                windows.add(each);
+            } else {
+                tabs.add(new ParticipantPanel(participant.name(), participant.kind(), panels));
+            }
         }
+        window = layout == Windows.ONE ? new MonitorWindow(world.name(), tabs, view, new PlotsPanel(plots),
+                new StatusStrip(statistics), memory) : null;
+        if (window != null) {
+            window.showAtTop(stopButton(world, space));
+        }
+        tap.startInBackground();
         watchStops(space);
         markReplay(space);
     }
@@ -54,14 +117,25 @@ public final class WorldMonitor implements AutoCloseable {
     private void markReplay(Capi space) {
         Thread lookup = new Thread(() -> {
             try {
-                ReplayMark.find(space).ifPresent(mark -> SwingUtilities.invokeLater(() -> windows.forEach(
-                        window -> window.setTitle(mark.label() + " - " + window.getTitle()))));
+                ReplayMark.find(space).ifPresent(mark -> SwingUtilities.invokeLater(() -> {
+                    windows.forEach(each -> each.setTitle(mark.label() + " - " + each.getTitle()));
+                    if (window != null) {
+                        window.setTitle(mark.label() + " - " + window.getTitle());
+                    }
+                }));
             } catch (RuntimeException e) {
                 // the monitors report an unreachable space on their panels
             }
         }, "monitor-replay-mark");
         lookup.setDaemon(true);
         lookup.start();
+    }
+
+    private StopButton stopButton(MonitoredWorld world, Capi space) {
+        StopButton stop = new StopButton("STOP button of the monitor",
+                () -> new StopButton.Scope(world, space.spaceUri().toString(), space));
+        stopButtons.add(stop);
+        return stop;
     }
 
     /** Watches the stop records in the background (the Swing thread never waits for the network). */
@@ -88,22 +162,31 @@ public final class WorldMonitor implements AutoCloseable {
         }
     }
 
-    /** The STOP buttons, one per window. */
+    /** The STOP buttons: one in the window, or one per participant's window. */
     public List<StopButton> stopButtons() {
         return List.copyOf(stopButtons);
     }
 
-    /** Shows the windows side by side, cascading from the top left corner. */
+    /** Shows the window, or the participants' windows side by side, cascading from the top left corner. */
     public void show() {
-        int offset = 0;
-        for (ParticipantWindow window : windows) {
-            window.setLocation(offset, offset / 2);
+        if (window != null) {
             window.setVisible(true);
-            offset += 40 + window.getWidth() / 2;
+            return;
+        }
+        int offset = 0;
+        for (ParticipantWindow each : windows) {
+            each.setLocation(offset, offset / 2);
+            each.setVisible(true);
+            offset += 40 + each.getWidth() / 2;
         }
     }
 
-    /** The windows, one per participant. */
+    /** The one window, or null when laid out per participant. */
+    public MonitorWindow window() {
+        return window;
+    }
+
+    /** The participants' windows (empty in the one-window layout). */
     public List<ParticipantWindow> windows() {
         return List.copyOf(windows);
     }
@@ -113,13 +196,31 @@ public final class WorldMonitor implements AutoCloseable {
         return List.copyOf(monitors);
     }
 
+    /** The tap feeding everything. */
+    public WorldTap tap() {
+        return tap;
+    }
+
+    /** The values behind the plots. */
+    public PlotModel plotModel() {
+        return plots;
+    }
+
+    /** The figures behind the status strip. */
+    public TrafficStatistics statistics() {
+        return statistics;
+    }
+
     /**
-     * Waits until every monitor watches its module (they start in the background). Not on the Swing thread.
+     * Waits until everything watches (it starts in the background). Not on the Swing thread.
      *
      * @return whether all do within {@code timeout} (a monitor that cannot watch says why on its panel)
      */
     public boolean awaitWatching(Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
+        if (!tap.awaitWatching(timeout)) {
+            return false;
+        }
         for (Monitor monitor : List.copyOf(monitors)) {
             if (!monitor.awaitWatching(Duration.ofNanos(Math.max(0, deadline - System.nanoTime())))) {
                 return false;
@@ -128,7 +229,7 @@ public final class WorldMonitor implements AutoCloseable {
         return true;
     }
 
-    /** Stops every monitor and closes the windows. */
+    /** Stops watching and closes the windows (the one window remembers its layout). */
     @Override
     public void close() {
         closed = true;
@@ -137,6 +238,10 @@ public final class WorldMonitor implements AutoCloseable {
             watcher.close();
         }
         monitors.forEach(Monitor::close);
+        tap.close();
         windows.forEach(ParticipantWindow::dispose);
+        if (window != null) {
+            window.dispose();
+        }
     }
 }

@@ -71,11 +71,13 @@ final class FakeHardware {
     static final class Bumper implements BumperModule {
         final AtomicBoolean failing = new AtomicBoolean();
         final AtomicInteger mask = new AtomicInteger(1 << 3 | 1 << 5);
+        final java.util.concurrent.atomic.AtomicReference<String> message =
+                new java.util.concurrent.atomic.AtomicReference<>("bumper module does not answer");
 
         @Override
         public int getAllBumper() {
             if (failing.get()) {
-                throw new IllegalStateException("bumper module does not answer");
+                throw new IllegalStateException(message.get());
             }
             return mask.get();
         }

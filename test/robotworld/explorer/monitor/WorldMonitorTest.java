@@ -27,7 +27,10 @@ import robotworld.explorer.gui.GuiTesting;
 import robotworld.explorer.monitor.gui.BumperModulePanel;
 import robotworld.explorer.monitor.gui.FreshnessLabel;
 import robotworld.explorer.monitor.gui.IRDistanceModulePanel;
+import robotworld.explorer.monitor.gui.LayoutMemory;
 import robotworld.explorer.monitor.gui.ModulePanel;
+import robotworld.explorer.monitor.gui.MonitorWindow;
+import robotworld.explorer.monitor.gui.ParticipantPanel;
 import robotworld.explorer.monitor.gui.MotorModulePanel;
 import robotworld.explorer.monitor.gui.OnOffIndicator;
 import robotworld.explorer.monitor.gui.ParticipantWindow;
@@ -98,15 +101,35 @@ class WorldMonitorTest {
     }
 
     @Test
-    void oneWindowPerParticipantWithAPanelPerModule() {
-        List<ParticipantWindow> windows = monitor.windows();
-        assertEquals(2, windows.size());
-        assertEquals("Monitor: DimRoom (environment) - Chapter5World", windows.get(0).getTitle());
-        assertEquals("Monitor: CaterpillarRobot (robot) - Chapter5World", windows.get(1).getTitle());
+    void oneWindowWithTheWorldViewPlotsATabPerParticipantAndTheStatusStrip() {
+        MonitorWindow window = monitor.window();
+        assertEquals("Monitor: Chapter5World - RobotWorldExplorer", onEdt(window::getTitle));
+        assertEquals(List.of("DimRoom", "CaterpillarRobot"), onEdt(() -> List.of(window.tabs().getTitleAt(0),
+                window.tabs().getTitleAt(1))));
         assertEquals(List.of(X10ApplianceModulePanel.class, X10LampModulePanel.class, MotorModulePanel.class,
                         BumperModulePanel.class, ServoModulePanel.class, IRDistanceModulePanel.class),
                 monitor.monitors().stream().map(m -> m.getPanel().getClass()).toList());
         assertEquals(FreshnessLabel.NO_REPORT, onEdt(() -> panel(X10ApplianceModulePanel.class).freshness().getText()));
+        assertTrue(onEdt(() -> window.getWidth() >= 800 && window.getHeight() >= 560), "a sensible default size");
+        assertTrue(monitor.windows().isEmpty());
+    }
+
+    @Test
+    void theThesisLayoutOfOneWindowPerParticipantIsStillThere() throws Exception {
+        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.everyModuleType(folder)));
+        WorldMonitor perParticipant = onEdt(() -> new WorldMonitor(world, space.connection(), new MonitorLoader(),
+                WorldMonitor.Windows.PER_PARTICIPANT, LayoutMemory.none()));
+        try {
+            List<ParticipantWindow> windows = perParticipant.windows();
+            assertEquals(2, windows.size());
+            assertEquals("Monitor: DimRoom (environment) - Chapter5World", windows.get(0).getTitle());
+            assertEquals("Monitor: CaterpillarRobot (robot) - Chapter5World", windows.get(1).getTitle());
+            assertTrue(onEdt(() -> windows.get(0).getWidth() >= 460 && windows.get(0).getHeight() >= 260),
+                    "no clipped sliver of a window");
+            assertEquals(null, perParticipant.window());
+        } finally {
+            onEdt(perParticipant::close);
+        }
     }
 
     @Test
@@ -188,8 +211,7 @@ class WorldMonitorTest {
             ModulePanel panel = (ModulePanel) each.getPanel();
             screenshot(panel, "panel-" + panel.moduleClass());
         }
-        screenshot(monitor.windows().get(0), "monitor-window-DimRoom");
-        screenshot(monitor.windows().get(1), "monitor-window-CaterpillarRobot");
+        screenshot(monitor.window(), "monitor-window-without-simulator");
     }
 
     @Test
@@ -206,6 +228,68 @@ class WorldMonitorTest {
         bumperHardware.failing.set(false);
         bumper.getAllBumper();
         eventually("the problem is cleared", () -> panel.problemText().isEmpty());
+    }
+
+    @Test
+    void aLongErrorWrapsInsideItsPanelAndEveryFieldStaysVisible() {
+        MonitorWindow window = monitor.window();
+        ParticipantPanel robotTab = window.participants().get(1);
+        onEdt(() -> window.tabs().setSelectedComponent(robotTab));
+        BumperModulePanel panel = panel(BumperModulePanel.class);
+        java.awt.Dimension windowSize = onEdt(() -> window.getSize());
+        java.awt.Rectangle panelBounds = onEdt(() -> panel.getBounds());
+        int columnWidth = onEdt(() -> robotTab.column().getWidth());
+        int preferredWidth = onEdt(() -> panel.getPreferredSize().width);
+
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        bumperHardware.message.set("the bumper module at address 2 did not answer: " + "no reply within 100 ms, "
+                .repeat(20) + "check the cable, the module's power and its address");
+        bumperHardware.failing.set(true);
+        try {
+            bumper.getAllBumper();
+        } catch (RuntimeException expected) {
+            // the monitor shows the error answer
+        }
+        eventually("the long problem is shown", () -> panel.problemText().contains("check the cable"));
+        onEdt(() -> {
+            window.validate();
+            return null;
+        });
+        assertEquals(windowSize, onEdt(() -> window.getSize()), "the window keeps its size");
+        assertEquals(panelBounds, onEdt(() -> panel.getBounds()), "the panel keeps its place and size");
+        assertEquals(columnWidth, onEdt(() -> robotTab.column().getWidth()), "nothing scrolls sideways");
+        assertEquals(preferredWidth, onEdt(() -> panel.getPreferredSize().width),
+                "the message does not make the panel want more width (which would widen a packed window)");
+        List<String> outside = onEdt(() -> {
+            List<String> found = new java.util.ArrayList<>();
+            collectOutside(robotTab.column(), robotTab.column(), found);
+            return found;
+        });
+        assertTrue(outside.isEmpty(), "every field lies within the tab's width: " + outside);
+        java.awt.Rectangle problem = onEdt(() -> javax.swing.SwingUtilities.convertRectangle(
+                panel.problemArea().getParent(), panel.problemArea().getBounds(), panel));
+        assertTrue(problem.x >= 0 && problem.x + problem.width <= panelBounds.width, "the message wraps inside: "
+                + problem);
+        screenshot(window, "monitor-window-long-error");
+        bumperHardware.failing.set(false);
+        bumper.getAllBumper();
+        eventually("the problem is cleared", () -> panel.problemText().isEmpty());
+    }
+
+    /** Visible components sticking out of {@code root} to the left or right. */
+    private static void collectOutside(java.awt.Container root, java.awt.Container container, List<String> found) {
+        for (java.awt.Component child : container.getComponents()) {
+            if (!child.isVisible()) {
+                continue;
+            }
+            java.awt.Rectangle bounds = javax.swing.SwingUtilities.convertRectangle(container, child.getBounds(), root);
+            if (bounds.x < 0 || bounds.x + bounds.width > root.getWidth()) {
+                found.add(child.getClass().getSimpleName() + " " + child.getName() + " " + bounds);
+            }
+            if (child instanceof java.awt.Container inner) {
+                collectOutside(root, inner, found);
+            }
+        }
     }
 
     @Test

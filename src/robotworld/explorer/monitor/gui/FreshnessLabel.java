@@ -47,6 +47,12 @@ public final class FreshnessLabel extends JLabel {
         }
     }
 
+    /** As wide as its place, never wider: the text changes every second, the layout must not. */
+    @Override
+    public java.awt.Dimension getPreferredSize() {
+        return new java.awt.Dimension(40, super.getPreferredSize().height);
+    }
+
     /** When the module last reported, or null. */
     public Instant lastReport() {
         return lastReport;

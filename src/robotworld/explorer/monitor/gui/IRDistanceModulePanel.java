@@ -1,36 +1,64 @@
 package robotworld.explorer.monitor.gui;
 
+import java.awt.BasicStroke;
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
 import java.awt.GridLayout;
+import java.awt.RenderingHints;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.util.Arrays;
+import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import javax.swing.JTextField;
+import javax.swing.SwingConstants;
 import robotworld.core.IRDistanceModule;
 
 /**
- * An IR distance module: one field per sensor with the last distance in millimetres, or the raw reading when
- * only {@code getAllSensors_ByteRep} was called (thesis figure 4.12).
+ * An IR distance module: per sensor a bar as long as the distance it measures (coloured near/middle/far as the
+ * world view's rays) and the value in millimetres, or the raw reading when only {@code getAllSensors_ByteRep} was
+ * called (thesis figure 4.12, drawn); beside them the rays around the robot, heading up, at the sensor angles the
+ * monitor assumes ({@link WorldView#ASSUMED_SENSOR_ANGLES}).
  */
 public class IRDistanceModulePanel extends ModulePanel {
 
-    private final JTextField[] sensors = new JTextField[IRDistanceModule.SENSORS];
+    private final JLabel[] values = new JLabel[IRDistanceModule.SENSORS];
+    private final ValueBar[] bars = new ValueBar[IRDistanceModule.SENSORS];
+    private final double[] distances = new double[IRDistanceModule.SENSORS];
+    private final RayFan fan = new RayFan();
 
     public IRDistanceModulePanel(String moduleName) {
         super("IRDistanceModule", moduleName);
-        JPanel grid = new JPanel(new GridLayout(0, 4, 6, 2));
-        for (int i = 0; i < sensors.length; i++) {
+        Arrays.fill(distances, Double.NaN);
+        JPanel grid = new JPanel(new GridLayout(0, 1, 0, 2));
+        for (int i = 0; i < values.length; i++) {
+            JPanel row = new JPanel(new BorderLayout(6, 0));
             JLabel label = new JLabel("Sensor " + (i + 1));
-            sensors[i] = new JTextField(ChannelValuesPanel.UNKNOWN, 7);
-            sensors[i].setEditable(false);
-            label.setLabelFor(sensors[i]);
-            grid.add(label);
-            grid.add(sensors[i]);
+            values[i] = new JLabel(ChannelValuesPanel.UNKNOWN, SwingConstants.RIGHT);
+            values[i].setPreferredSize(new Dimension(62, values[i].getPreferredSize().height));
+            values[i].getAccessibleContext().setAccessibleName("sensor " + (i + 1));
+            bars[i] = new ValueBar(0, WorldView.ASSUMED_RANGE, 0, false);
+            label.setLabelFor(bars[i]);
+            row.add(label, BorderLayout.WEST);
+            row.add(bars[i], BorderLayout.CENTER);
+            row.add(values[i], BorderLayout.EAST);
+            grid.add(row);
         }
-        setBody(grid);
+        JPanel body = new JPanel(new BorderLayout(8, 0));
+        body.add(grid, BorderLayout.CENTER);
+        body.add(fan, BorderLayout.EAST);
+        setBody(body);
     }
 
     /** Shows the distance of sensor {@code sensor} (1-based) in millimetres. */
     public void showDistance(int sensor, int millimetres) {
-        show(sensor, millimetres + " mm");
+        if (show(sensor, millimetres + " mm")) {
+            distances[sensor - 1] = millimetres;
+            bars[sensor - 1].setValue(millimetres, WorldView.rayColour(millimetres, WorldView.ASSUMED_RANGE));
+            fan.repaint();
+        }
     }
 
     /** Shows all distances, sensor 1 first. */
@@ -49,14 +77,57 @@ public class IRDistanceModulePanel extends ModulePanel {
 
     /** The text shown for sensor {@code sensor} (1-based). */
     public String valueText(int sensor) {
-        return sensors[sensor - 1].getText();
+        return values[sensor - 1].getText();
     }
 
-    private void show(int sensor, String text) {
-        if (sensor < 1 || sensor > sensors.length) {
+    /** The bar of sensor {@code sensor} (1-based). */
+    public ValueBar bar(int sensor) {
+        return bars[sensor - 1];
+    }
+
+    private boolean show(int sensor, String text) {
+        if (sensor < 1 || sensor > values.length) {
             showProblem("report about sensor " + sensor + ", which this module does not have");
-            return;
+            return false;
         }
-        sensors[sensor - 1].setText(text);
+        values[sensor - 1].setText(text);
+        return true;
+    }
+
+    /** The rays around the robot, heading up. */
+    private final class RayFan extends JComponent {
+        RayFan() {
+            setPreferredSize(new Dimension(120, 120));
+            setName("rays");
+        }
+
+        @Override
+        protected void paintComponent(Graphics graphics) {
+            Graphics2D g = (Graphics2D) graphics.create();
+            try {
+                g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+                double size = Math.min(getWidth(), getHeight());
+                double cx = getWidth() / 2.0;
+                double cy = getHeight() / 2.0;
+                double body = size * 0.14;
+                double scale = (size / 2 - body - 2) / WorldView.ASSUMED_RANGE;
+                for (int i = 0; i < distances.length; i++) {
+                    double angle = Math.toRadians(90 + WorldView.ASSUMED_SENSOR_ANGLES[i]);
+                    double dx = Math.cos(angle);
+                    double dy = -Math.sin(angle);
+                    boolean known = !Double.isNaN(distances[i]);
+                    double length = (known ? Math.min(distances[i], WorldView.ASSUMED_RANGE)
+                            : WorldView.ASSUMED_RANGE) * scale;
+                    g.setColor(known ? WorldView.rayColour(distances[i], WorldView.ASSUMED_RANGE) : WorldView.NO_HIT);
+                    g.setStroke(new BasicStroke(known ? 2f : 1f));
+                    g.draw(new Line2D.Double(cx + dx * body, cy + dy * body, cx + dx * (body + length),
+                            cy + dy * (body + length)));
+                }
+                g.setColor(WorldView.BODY);
+                g.fill(new Ellipse2D.Double(cx - body, cy - body, 2 * body, 2 * body));
+            } finally {
+                g.dispose();
+            }
+        }
     }
 }

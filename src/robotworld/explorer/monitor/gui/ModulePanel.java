@@ -2,7 +2,6 @@ package robotworld.explorer.monitor.gui;
 
 import java.awt.BorderLayout;
 import java.awt.Color;
-import java.awt.GridLayout;
 import java.time.Instant;
 import javax.swing.BorderFactory;
 import javax.swing.JComponent;
@@ -12,8 +11,7 @@ import javax.swing.JPanel;
 /**
  * The frame every module panel shares: a titled border {@code <Class>: <Name>} (as in the thesis figures), the
  * module-specific body, and a status area with the {@link FreshnessLabel}, the last problem reported (a failed
- * call) and, for an actuator put into its safe state, who stopped it, when and why. Subclasses put their body in
- * with {@link #setBody}. Swing thread only.
+ * call) and, for an actuator put into its safe state, who stopped it, when and why. Subclasses put their body in with {@link #setBody}. Swing thread only.
  */
 public abstract class ModulePanel extends JPanel {
 
@@ -22,7 +20,7 @@ public abstract class ModulePanel extends JPanel {
     private final String moduleClass;
     private final String moduleName;
     private final FreshnessLabel freshness = new FreshnessLabel();
-    private final JLabel problem = new JLabel(" ");
+    private final ProblemText problem = new ProblemText();
     private final JLabel stop = new JLabel();
 
     protected ModulePanel(String moduleClass, String moduleName) {
@@ -33,13 +31,13 @@ public abstract class ModulePanel extends JPanel {
         setBorder(BorderFactory.createCompoundBorder(BorderFactory.createTitledBorder(moduleClass + ": " + moduleName),
                 BorderFactory.createEmptyBorder(2, 6, 4, 6)));
         problem.setForeground(PROBLEM);
+        JPanel status = new JPanel(new BorderLayout());
+        status.add(freshness, BorderLayout.NORTH);
+        status.add(problem, BorderLayout.CENTER);
         stop.setForeground(PROBLEM);
         stop.setName("stop");
         stop.setVisible(false);
-        JPanel status = new JPanel(new GridLayout(0, 1));
-        status.add(freshness);
-        status.add(problem);
-        status.add(stop);
+        status.add(stop, BorderLayout.SOUTH);
         add(status, BorderLayout.SOUTH);
         getAccessibleContext().setAccessibleName(moduleClass + " " + moduleName);
     }
@@ -59,16 +57,18 @@ public abstract class ModulePanel extends JPanel {
         freshness.reportedEarlier(host);
     }
 
-    /** Shows a failed call until the next good report. */
+    /**
+     * Shows a failed call until the next good report: wrapped within the panel's width on at most
+     * {@value ProblemText#ROWS} lines (the whole text in the tooltip), so that however long, it never changes the
+     * layout.
+     */
     public void showProblem(String text) {
-        problem.setText(text);
-        problem.setToolTipText(text);
+        problem.show(text);
     }
 
     /** Clears the problem line (a good report arrived). */
     public void clearProblem() {
-        problem.setText(" ");
-        problem.setToolTipText(null);
+        problem.show("");
     }
 
     /** Shows that the module was put into its safe state, and why, until it is commanded again. */
@@ -98,6 +98,11 @@ public abstract class ModulePanel extends JPanel {
     /** The problem line's text (blank when there is none). */
     public String problemText() {
         return problem.getText().isBlank() ? "" : problem.getText();
+    }
+
+    /** The problem area (for tests of the layout). */
+    public JComponent problemArea() {
+        return problem;
     }
 
     /** The freshness line. */

@@ -1,22 +1,21 @@
 package robotworld.explorer.monitor.gui;
 
 import java.awt.BorderLayout;
+import java.awt.Dimension;
 import java.util.List;
-import javax.swing.BorderFactory;
-import javax.swing.Box;
-import javax.swing.BoxLayout;
 import javax.swing.JComponent;
 import javax.swing.JFrame;
-import javax.swing.JLabel;
-import javax.swing.JPanel;
-import javax.swing.JScrollPane;
 import javax.swing.WindowConstants;
 
 /**
- * One participant's monitoring window (thesis 4.2.4): the panels of its modules one below the other, titled
- * "Monitor: &lt;participant&gt; (robot) - &lt;world&gt;".
+ * One participant's monitoring window (thesis 4.2.4; {@code rwe monitor --window-per-participant}): the panels of
+ * its modules one below the other, titled "Monitor: &lt;participant&gt; (robot) - &lt;world&gt;". It opens at least
+ * {@value #MIN_WIDTH} × {@value #MIN_HEIGHT} pixels, so a participant with one small module is not a clipped sliver.
  */
 public class ParticipantWindow extends JFrame {
+
+    static final int MIN_WIDTH = 460;
+    static final int MIN_HEIGHT = 260;
 
     /**
      * @param world       the world's name
@@ -27,19 +26,10 @@ public class ParticipantWindow extends JFrame {
     public ParticipantWindow(String world, String participant, String kind, List<JComponent> panels) {
         super(title(world, participant, kind));
         setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-        JPanel column = new JPanel();
-        column.setLayout(new BoxLayout(column, BoxLayout.Y_AXIS));
-        column.setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
-        if (panels.isEmpty()) {
-            column.add(new JLabel("This " + kind + " has no modules."));
-        }
-        for (JComponent panel : panels) {
-            panel.setAlignmentX(LEFT_ALIGNMENT);
-            column.add(panel);
-            column.add(Box.createVerticalStrut(4));
-        }
-        getContentPane().add(new JScrollPane(column), BorderLayout.CENTER);
+        getContentPane().add(new ParticipantPanel(participant, kind, panels), BorderLayout.CENTER);
         pack();
+        setMinimumSize(new Dimension(MIN_WIDTH, MIN_HEIGHT));
+        setSize(Math.max(MIN_WIDTH, getWidth()), Math.max(MIN_HEIGHT, Math.min(getHeight(), 900)));
     }
 
     /**
@@ -49,6 +39,7 @@ public class ParticipantWindow extends JFrame {
     public void showAtTop(JComponent bar) {
         getContentPane().add(bar, BorderLayout.NORTH);
         pack();
+        setSize(Math.max(MIN_WIDTH, getWidth()), Math.max(MIN_HEIGHT, Math.min(getHeight(), 900)));
     }
 
     /** The window title for a participant. */

@@ -51,6 +51,18 @@ public final class AnswerText {
         return joined.toString();
     }
 
+    /**
+     * The values as {@link #value(CallTuple)}, in the units the monitor shows everywhere: a motor's speed as
+     * -1..1 of full speed ({@code 1 +0.250}), not the per-mille it travels as.
+     */
+    public static String value(String moduleClass, CallTuple answer) {
+        if ("MotorModule".equals(moduleClass) && !isError(answer) && answer.size() == 2
+                && answer.fields().get(0) instanceof IntEntry motor && answer.fields().get(1) instanceof IntEntry speed) {
+            return motor.value() + " " + String.format(java.util.Locale.ROOT, "%+.3f", speed.value() / 1000.0);
+        }
+        return value(answer);
+    }
+
     /** An error answer's message with the serving host: {@code message (on robot-pc)}. */
     public static String errorMessage(CallTuple answer) {
         if (answer.fields().size() >= 2 && answer.fields().get(1) instanceof Tuple detail && detail.arity() == 4) {

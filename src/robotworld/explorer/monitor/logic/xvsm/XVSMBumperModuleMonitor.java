@@ -2,6 +2,7 @@ package robotworld.explorer.monitor.logic.xvsm;
 
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.BumperModulePanel;
+import robotworld.observe.WorldTap;
 import robotworld.space.Capi;
 import robotworld.space.Tuple;
 import robotworld.xvsm.CallTuple;
@@ -14,6 +15,11 @@ public class XVSMBumperModuleMonitor extends XVSMMonitor<BumperModulePanel> {
 
     public XVSMBumperModuleMonitor(MonitoredModule module, Capi space) {
         super(module, space, new BumperModulePanel(module.moduleName()));
+    }
+
+    /** Watches through a tap shared with the other monitors of the world. */
+    public XVSMBumperModuleMonitor(MonitoredModule module, WorldTap tap) {
+        super(module, tap, new BumperModulePanel(module.moduleName()));
     }
 
     @Override

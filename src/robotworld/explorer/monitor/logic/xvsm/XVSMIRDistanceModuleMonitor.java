@@ -2,6 +2,7 @@ package robotworld.explorer.monitor.logic.xvsm;
 
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.IRDistanceModulePanel;
+import robotworld.observe.WorldTap;
 import robotworld.space.Capi;
 import robotworld.space.Tuple;
 import robotworld.xvsm.CallTuple;
@@ -14,6 +15,11 @@ public class XVSMIRDistanceModuleMonitor extends XVSMMonitor<IRDistanceModulePan
 
     public XVSMIRDistanceModuleMonitor(MonitoredModule module, Capi space) {
         super(module, space, new IRDistanceModulePanel(module.moduleName()));
+    }
+
+    /** Watches through a tap shared with the other monitors of the world. */
+    public XVSMIRDistanceModuleMonitor(MonitoredModule module, WorldTap tap) {
+        super(module, tap, new IRDistanceModulePanel(module.moduleName()));
     }
 
     @Override

@@ -2,52 +2,78 @@ package robotworld.explorer.monitor.logic.xvsm;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.util.List;
 import javax.swing.SwingUtilities;
 import robotworld.explorer.monitor.Monitor;
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.ModulePanel;
+import robotworld.observe.AnswerSeen;
+import robotworld.observe.Gap;
+import robotworld.observe.ModuleRef;
+import robotworld.observe.WorldLayout;
+import robotworld.observe.WorldObserver;
+import robotworld.observe.WorldTap;
 import robotworld.safety.StopRecord;
 import robotworld.space.Capi;
 import robotworld.xvsm.CallTuple;
 
 /**
- * What every XVSM monitor does (thesis table 3): watch the module's ANSWER container and, on the Swing thread,
- * show what it already held (the module's last known state), then mark the panel fresh on every answer, show
- * error answers as problems and hand good answers to {@link #show}. A subclass only says how an answer of its
- * module type changes its panel. Create on the Swing thread: the first answer is shown only after construction
- * has finished.
+ * What every XVSM monitor does (thesis table 3): watch the module's answers through a
+ * {@link WorldTap} and, on the Swing thread, show what the ANSWER container already held (the module's last known
+ * state), then mark the panel fresh on every answer, show error answers as problems and hand good answers to
+ * {@link #show}. A subclass only says how an answer of its module type changes its panel.
+ *
+ * <p>Two ways to build one: with a {@link Capi} (the naming convention's constructor), it taps the module's
+ * containers on its own; with a shared {@link WorldTap} (as the monitor window does for a whole world), it is one
+ * more observer of that tap, which its owner starts. Create on the Swing thread: the first answer is shown only
+ * after construction has finished.
  *
  * @param <P> the module's panel
  */
 public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
 
     private final MonitoredModule module;
+    private final ModuleRef ref;
     private final P panel;
-    private final AnswerWatcher watcher;
+    private final WorldTap tap;
+    private final boolean ownsTap;
+    private final WorldObserver observer = new WorldObserver() {
+        @Override
+        public void answerSeen(AnswerSeen event) {
+            if (event.module().equals(ref)) {
+                SwingUtilities.invokeLater(() -> display(event.answer(), event.earlier() ? null : event.at()));
+            }
+        }
 
-    /**
-     * Starts watching the ANSWER container of {@code module} in {@code space}, in the background (the Swing thread
-     * does not wait for the network); a failure is shown on the panel.
-     */
+        @Override
+        public void gap(Gap gap) {
+            if (gap.ended() && (gap.module() == null || gap.module().equals(ref))) {
+                SwingUtilities.invokeLater(() -> panel().showProblem("not watching: " + gap.why()));
+            }
+        }
+    };
+
+    /** Watches {@code module} in {@code space} with a tap of its own, started in the background. */
     protected XVSMMonitor(MonitoredModule module, Capi space, P panel) {
+        this(module, new WorldTap(space, new WorldLayout(module.participant(), List.of(new WorldLayout.Participant(
+                module.participant(), "module", List.of(module.ref()))))), true, panel);
+    }
+
+    /** Watches {@code module} through {@code tap}, which its owner starts and closes. */
+    protected XVSMMonitor(MonitoredModule module, WorldTap tap, P panel) {
+        this(module, tap, false, panel);
+    }
+
+    private XVSMMonitor(MonitoredModule module, WorldTap tap, boolean ownsTap, P panel) {
         this.module = module;
+        this.ref = module.ref();
         this.panel = panel;
-        this.watcher = new AnswerWatcher(space, module.participant(), module.moduleName(), new AnswerListener() {
-            @Override
-            public void answer(CallTuple answer, Instant when) {
-                SwingUtilities.invokeLater(() -> display(answer, when));
-            }
-
-            @Override
-            public void earlier(CallTuple answer) {
-                SwingUtilities.invokeLater(() -> display(answer, null));
-            }
-
-            @Override
-            public void stopped(String why) {
-                SwingUtilities.invokeLater(() -> panel.showProblem("not watching: " + why));
-            }
-        }).startInBackground();
+        this.tap = tap;
+        this.ownsTap = ownsTap;
+        tap.add(observer);
+        if (ownsTap) {
+            tap.startInBackground();
+        }
     }
 
     /**
@@ -84,14 +110,21 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
         return panel;
     }
 
+    private P panel() {
+        return panel;
+    }
+
     @Override
     public boolean awaitWatching(Duration timeout) throws InterruptedException {
-        return watcher.awaitWatching(timeout);
+        return tap.awaitWatching(timeout);
     }
 
     @Override
     public void close() {
-        watcher.close();
+        tap.remove(observer);
+        if (ownsTap) {
+            tap.close();
+        }
     }
 
     /** Shows an answer that arrived at {@code when}, or (null) one found when monitoring started. */

@@ -1,8 +1,9 @@
 package robotworld.explorer.monitor.logic.xvsm;
 
+import robotworld.core.MotorModule;
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.MotorModulePanel;
-import robotworld.core.MotorModule;
+import robotworld.observe.WorldTap;
 import robotworld.safety.StopRecord;
 import robotworld.space.Capi;
 import robotworld.xvsm.CallTuple;
@@ -12,6 +13,11 @@ public class XVSMMotorModuleMonitor extends XVSMMonitor<MotorModulePanel> {
 
     public XVSMMotorModuleMonitor(MonitoredModule module, Capi space) {
         super(module, space, new MotorModulePanel(module.moduleName()));
+    }
+
+    /** Watches through a tap shared with the other monitors of the world. */
+    public XVSMMotorModuleMonitor(MonitoredModule module, WorldTap tap) {
+        super(module, tap, new MotorModulePanel(module.moduleName()));
     }
 
     @Override

@@ -2,6 +2,7 @@ package robotworld.explorer.monitor.logic.xvsm;
 
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.X10ApplianceModulePanel;
+import robotworld.observe.WorldTap;
 import robotworld.space.Capi;
 import robotworld.space.IntEntry;
 import robotworld.xvsm.CallTuple;
@@ -12,6 +13,11 @@ public class XVSMX10ApplianceModuleMonitor extends XVSMMonitor<X10ApplianceModul
 
     public XVSMX10ApplianceModuleMonitor(MonitoredModule module, Capi space) {
         super(module, space, new X10ApplianceModulePanel(module.moduleName()));
+    }
+
+    /** Watches through a tap shared with the other monitors of the world. */
+    public XVSMX10ApplianceModuleMonitor(MonitoredModule module, WorldTap tap) {
+        super(module, tap, new X10ApplianceModulePanel(module.moduleName()));
     }
 
     @Override

@@ -3,6 +3,7 @@ package robotworld.explorer.monitor.logic.xvsm;
 import robotworld.explorer.monitor.LampLevel;
 import robotworld.explorer.monitor.MonitoredModule;
 import robotworld.explorer.monitor.gui.X10LampModulePanel;
+import robotworld.observe.WorldTap;
 import robotworld.space.Capi;
 import robotworld.xvsm.CallTuple;
 
@@ -16,6 +17,11 @@ public class XVSMX10LampModuleMonitor extends XVSMMonitor<X10LampModulePanel> {
 
     public XVSMX10LampModuleMonitor(MonitoredModule module, Capi space) {
         super(module, space, new X10LampModulePanel(module.moduleName()));
+    }
+
+    /** Watches through a tap shared with the other monitors of the world. */
+    public XVSMX10LampModuleMonitor(MonitoredModule module, WorldTap tap) {
+        super(module, tap, new X10LampModulePanel(module.moduleName()));
     }
 
     @Override

@@ -1,0 +1,156 @@
+package robotworld.explorer.monitor.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.GraphicsEnvironment;
+import java.awt.Rectangle;
+import java.awt.Toolkit;
+import java.util.ArrayList;
+import java.util.List;
+import javax.swing.JFrame;
+import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
+import javax.swing.WindowConstants;
+
+/**
+ * The one monitor window of a world: the world view (top left), the plots (below it), one tab per participant with
+ * its module panels (right), and the status strip (bottom). Its size, maximized state, dividers and tab are
+ * remembered between runs ({@link LayoutMemory}); the first time it takes a sensible share of the screen.
+ */
+public final class MonitorWindow extends JFrame {
+
+    private static final Dimension DEFAULT_SIZE = new Dimension(1360, 900);
+
+    private final String world;
+    private final WorldView view;
+    private final PlotsPanel plots;
+    private final StatusStrip strip;
+    private final JTabbedPane tabs = new JTabbedPane();
+    private final List<ParticipantPanel> participants;
+    private final JSplitPane left;
+    private final JSplitPane main;
+    private final LayoutMemory memory;
+    private boolean saved;
+
+    public MonitorWindow(String world, List<ParticipantPanel> participants, WorldView view, PlotsPanel plots,
+            StatusStrip strip, LayoutMemory memory) {
+        super(title(world));
+        this.world = world;
+        this.view = view;
+        this.plots = plots;
+        this.strip = strip;
+        this.participants = new ArrayList<>(participants);
+        this.memory = memory;
+        setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+        for (ParticipantPanel participant : participants) {
+            tabs.addTab(participant.participant(), participant);
+        }
+        tabs.getAccessibleContext().setAccessibleName("participants");
+        left = new JSplitPane(JSplitPane.VERTICAL_SPLIT, true, view, plots);
+        left.setResizeWeight(0.6);
+        left.setOneTouchExpandable(true);
+        main = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, true, left, tabs);
+        main.setResizeWeight(0.62);
+        main.setOneTouchExpandable(true);
+        getContentPane().add(main, BorderLayout.CENTER);
+        getContentPane().add(strip, BorderLayout.SOUTH);
+        applyLayout();
+    }
+
+    /** The window title of a world's monitor. */
+    public static String title(String world) {
+        return "Monitor: " + world + " - RobotWorldExplorer";
+    }
+
+    private void applyLayout() {
+        Rectangle screen = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        Rectangle remembered = memory.bounds();
+        if (remembered != null && screen.intersects(remembered)) {
+            setBounds(remembered);
+        } else {
+            int width = Math.min(DEFAULT_SIZE.width, (int) (screen.width * 0.92));
+            int height = Math.min(DEFAULT_SIZE.height, (int) (screen.height * 0.92));
+            setBounds(screen.x + (screen.width - width) / 2, screen.y + (screen.height - height) / 2, width, height);
+        }
+        if (memory.flag("window.maximized") && Toolkit.getDefaultToolkit().isFrameStateSupported(MAXIMIZED_BOTH)) {
+            setExtendedState(MAXIMIZED_BOTH);
+        }
+        int mainDivider = memory.number("divider.main", -1);
+        int leftDivider = memory.number("divider.left", -1);
+        main.setDividerLocation(mainDivider > 50 && mainDivider < getWidth() - 50 ? mainDivider
+                : (int) (getWidth() * 0.62));
+        left.setDividerLocation(leftDivider > 50 && leftDivider < getHeight() - 100 ? leftDivider
+                : (int) (getHeight() * 0.52));
+        String tab = memory.text("tab." + world, null);
+        for (int i = 0; tab == null && i < this.participants.size(); i++) {
+            if (this.participants.get(i).isRobot()) {
+                tab = this.participants.get(i).participant(); // robots first: they move
+            }
+        }
+        for (int i = 0; i < tabs.getTabCount(); i++) {
+            if (tabs.getTitleAt(i).equals(tab)) {
+                tabs.setSelectedIndex(i);
+            }
+        }
+    }
+
+    /** Shows a bar at the top of the window, always visible: the world's STOP button. */
+    public void showAtTop(javax.swing.JComponent bar) {
+        getContentPane().add(bar, BorderLayout.NORTH);
+        validate();
+    }
+
+    /** Remembers the layout, then closes. */
+    @Override
+    public void dispose() {
+        if (!saved && isDisplayable()) {
+            saved = true;
+            boolean maximized = (getExtendedState() & MAXIMIZED_BOTH) == MAXIMIZED_BOTH;
+            if (!maximized) {
+                memory.bounds(getBounds());
+            }
+            memory.put("window.maximized", maximized).put("divider.main", main.getDividerLocation())
+                    .put("divider.left", left.getDividerLocation());
+            if (tabs.getSelectedIndex() >= 0) {
+                memory.put("tab." + world, tabs.getTitleAt(tabs.getSelectedIndex()));
+            }
+            memory.save();
+        }
+        super.dispose();
+    }
+
+    /** The world view. */
+    public WorldView worldView() {
+        return view;
+    }
+
+    /** The plots. */
+    public PlotsPanel plots() {
+        return plots;
+    }
+
+    /** The status strip. */
+    public StatusStrip statusStrip() {
+        return strip;
+    }
+
+    /** The participants' tabs. */
+    public JTabbedPane tabs() {
+        return tabs;
+    }
+
+    /** The tab content of each participant, in order. */
+    public List<ParticipantPanel> participants() {
+        return List.copyOf(participants);
+    }
+
+    /** The divider between the left side and the tabs. */
+    public JSplitPane mainSplit() {
+        return main;
+    }
+
+    /** The divider between world view and plots. */
+    public JSplitPane leftSplit() {
+        return left;
+    }
+}

@@ -1,0 +1,181 @@
+package robotworld.explorer.monitor;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static robotworld.explorer.gui.GuiTesting.eventually;
+import static robotworld.explorer.gui.GuiTesting.onEdt;
+import static robotworld.explorer.gui.GuiTesting.screenshot;
+
+import java.awt.Color;
+import java.awt.geom.Point2D;
+import java.awt.image.BufferedImage;
+import java.time.Duration;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import robotworld.bus.BumperModuleProxy;
+import robotworld.bus.BusTiming;
+import robotworld.bus.MotorModuleProxy;
+import robotworld.bus.RS485Bus;
+import robotworld.bus.SerialSettings;
+import robotworld.core.BumperModule;
+import robotworld.core.MotorModule;
+import robotworld.description.DescriptionLoader;
+import robotworld.explorer.gui.GuiTesting;
+import robotworld.explorer.monitor.gui.LayoutMemory;
+import robotworld.explorer.monitor.gui.MonitorWindow;
+import robotworld.explorer.monitor.gui.WorldView;
+import robotworld.observe.GroundTruth;
+import robotworld.observe.ModuleRef;
+import robotworld.sim.robot.GroundTruthFeed;
+import robotworld.sim.robot.LineTiming;
+import robotworld.sim.robot.SimRobotConfigReader;
+import robotworld.sim.robot.SimulatedRobot;
+import robotworld.testsupport.ProjectFiles;
+import robotworld.xvsm.XVSMBumperModuleLocal;
+import robotworld.xvsm.XVSMBumperModuleRemote;
+import robotworld.xvsm.XVSMMotorModuleLocal;
+import robotworld.xvsm.XVSMMotorModuleRemote;
+import robotworld.xvsm.XVSMRuntime;
+
+/**
+ * The monitor window with a simulated robot behind it, as a user runs it: the robot's program serves its motor and
+ * bumper modules on the simulated bus, a laptop drives it through the space into the crate, the simulator publishes
+ * its ground truth, and the pixels of the world view must show the robot where it stopped, touching with its front
+ * bumpers; the plots must gain the values.
+ */
+class WorldViewTest {
+
+    private static final String ROBOT = "CaterpillarRobot";
+    /** The crate of the example robot's arena begins at x = 2000; the body's radius is 150. */
+    private static final double STOP_X = 2000 - 150;
+
+    private MonitoredSpace space;
+    private SimulatedRobot robot;
+    private RS485Bus bus;
+    private GroundTruthFeed feed;
+    private WorldMonitor monitor;
+
+    @BeforeEach
+    void start() throws Exception {
+        GuiTesting.assumeDisplay();
+        space = new MonitoredSpace();
+        robot = SimulatedRobot.create(SimRobotConfigReader.read(ProjectFiles.resolve(
+                "docs/examples/simulated-robot.sim")).withTiming(LineTiming.FAST).withTimeScale(4));
+        bus = new RS485Bus(robot.serve("tcp://127.0.0.1:0"), SerialSettings.eightNoneOne(115_200),
+                BusTiming.defaults());
+        XVSMRuntime robotLaptop = space.host("robot-laptop");
+        new XVSMMotorModuleLocal(robotLaptop, ROBOT, "Motor-Controller", new MotorModuleProxy(bus, 1));
+        new XVSMBumperModuleLocal(robotLaptop, ROBOT, "Bumper-Sensor", new BumperModuleProxy(bus, 2));
+        feed = GroundTruthFeed.start(robot, ROBOT, space.connection(), Duration.ofMillis(20));
+        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5()));
+        monitor = onEdt(() -> {
+            WorldMonitor opened = new WorldMonitor(world, space.connection(), new MonitorLoader(),
+                    WorldMonitor.Windows.ONE, LayoutMemory.none());
+            opened.window().setBounds(0, 0, 1280, 860);
+            opened.show();
+            return opened;
+        });
+        assertTrue(monitor.awaitWatching(Duration.ofSeconds(10)));
+    }
+
+    @AfterEach
+    void stop() throws Exception {
+        if (monitor != null) {
+            onEdt(monitor::close);
+        }
+        if (feed != null) {
+            feed.close();
+        }
+        if (bus != null) {
+            bus.close();
+        }
+        if (robot != null) {
+            robot.close();
+        }
+        if (space != null) {
+            space.close();
+        }
+    }
+
+    @Test
+    void theRobotDrivenIntoTheCrateIsDrawnWhereItStoppedWithItsFrontBumpersTouching() throws Exception {
+        MonitorWindow window = monitor.window();
+        WorldView view = window.worldView();
+        eventually("the first frame is shown", Duration.ofSeconds(10), view::showsGroundTruth);
+
+        XVSMRuntime laptop = space.host("laptop");
+        MotorModule motor = new XVSMMotorModuleRemote(laptop, ROBOT, "Motor-Controller");
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        motor.setMotor(1, 1.0);
+        motor.setMotor(2, 1.0);
+        long deadline = System.nanoTime() + Duration.ofSeconds(20).toNanos();
+        while (!bumper.getSingleBumper(4)) { // 1250 mm at 300 mm/s, four times as fast: about a second
+            assertTrue(System.nanoTime() < deadline, "the robot reached the crate, at " + robot.pose());
+            Thread.sleep(20);
+        }
+        motor.setMotor(1, 0);
+        motor.setMotor(2, 0);
+        assertEquals(STOP_X, robot.pose().x(), 5.0, "stopped at the crate");
+
+        eventually("the view has the frame at the crate", Duration.ofSeconds(10), () -> {
+            GroundTruth frame = view.frameOf(ROBOT);
+            return Math.abs(frame.body().x() - robot.pose().x()) <= 1 && frame.anyContact();
+        });
+        Thread.sleep(900); // let the contact flash fade: the ring itself is what is checked
+        onEdt(() -> view.repaint());
+        BufferedImage image = ImageIO.read(screenshot(view, "world-view-robot-at-crate").toFile());
+        GroundTruth frame = onEdt(() -> view.frameOf(ROBOT));
+
+        Point2D centre = onEdt(() -> view.toScreen(frame.body().x(), frame.body().y()));
+        assertColour(WorldView.BODY, image, centre, "the robot's centre, where it stopped");
+        Point2D start = onEdt(() -> view.toScreen(600, 1000));
+        assertNotEquals(WorldView.BODY.getRGB(), pixel(image, start).getRGB(), "no robot left at the start");
+        Point2D crate = onEdt(() -> view.toScreen(2200, 1000));
+        assertColour(WorldView.OBSTACLE, image, crate, "the crate");
+
+        // every mounted bumper on the ring around the body: red where the frame says it touches, grey where not
+        double pixelsPerMm = onEdt(() -> view.toScreen(1, 0).getX() - view.toScreen(0, 0).getX());
+        double ring = 150 * pixelsPerMm + Math.max(3, 150 * pixelsPerMm * 0.12);
+        assertTrue(frame.bumpers().stream().anyMatch(b -> b.contact() && (b.number() == 4 || b.number() == 6)),
+                "a front bumper touches the crate: " + frame.bumpers());
+        for (GroundTruth.Bumper b : frame.bumpers()) {
+            assertColour(b.contact() ? WorldView.CONTACT : WorldView.FREE, image,
+                    onRing(centre, ring, frame.body().heading() + b.angle()), "bumper " + b.number());
+        }
+
+        // the plots gained the motor commands and the bumper readings
+        ModuleRef motorModule = new ModuleRef(ROBOT, "Motor-Controller", "MotorModule");
+        eventually("the motor plot has the four commands", () -> {
+            window.plots().refresh();
+            return window.plots().pointsShown(motorModule) >= 4;
+        });
+        int before = onEdt(() -> window.plots().pointsShown(motorModule));
+        motor.setMotor(1, -0.5);
+        motor.setMotor(1, 0);
+        eventually("it gains the next ones", () -> {
+            window.plots().refresh();
+            return window.plots().pointsShown(motorModule) >= before + 2;
+        });
+        assertTrue(onEdt(() -> window.plots().latencyPointsShown()) > 0, "latencies of the remote calls");
+        screenshot(window, "monitor-window-simulated-robot");
+    }
+
+    private static Point2D onRing(Point2D centre, double radius, double degrees) {
+        double angle = Math.toRadians(degrees);
+        return new Point2D.Double(centre.getX() + radius * Math.cos(angle), centre.getY() - radius * Math.sin(angle));
+    }
+
+    private static Color pixel(BufferedImage image, Point2D point) {
+        return new Color(image.getRGB((int) Math.round(point.getX()), (int) Math.round(point.getY())));
+    }
+
+    private static void assertColour(Color expected, BufferedImage image, Point2D point, String what) {
+        Color actual = pixel(image, point);
+        assertEquals(expected.getRGB(), actual.getRGB(), what + " at " + point + ": expected " + expected + ", was "
+                + actual);
+    }
+
+}
