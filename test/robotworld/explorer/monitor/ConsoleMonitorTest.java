@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.time.Duration;
+import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
@@ -101,6 +102,73 @@ class ConsoleMonitorTest {
             assertEquals(null, failure.get());
         }
         assertTrue(out.toString().contains("DimRoom") && out.toString().contains(" on "), out.toString());
+    }
+
+    @Test
+    void changesOnlyPrintsAValueOncePerChannelAndMotorSpeedsAreMinusOneToOne() throws Exception {
+        StringWriter text = new StringWriter();
+        try (MonitoredSpace space = new MonitoredSpace()) {
+            XVSMRuntime robot = space.host("robot-laptop");
+            XVSMRuntime laptop = space.host("laptop");
+            new robotworld.xvsm.XVSMMotorModuleLocal(robot, "CaterpillarRobot", "Motor-Controller",
+                    new FakeHardware.Motor());
+            new XVSMBumperModuleLocal(robot, "CaterpillarRobot", "Bumper-Sensor", new FakeHardware.Bumper());
+            MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5()));
+            try (ConsoleMonitor monitor = new ConsoleMonitor(world, space.connection(), new PrintWriter(text),
+                    new ConsoleMonitor.Options(true, false))) {
+                robotworld.core.MotorModule motor = new robotworld.xvsm.XVSMMotorModuleRemote(laptop,
+                        "CaterpillarRobot", "Motor-Controller");
+                XVSMBumperModuleRemote bumper = new XVSMBumperModuleRemote(laptop, "CaterpillarRobot", "Bumper-Sensor");
+                for (int i = 0; i < 5; i++) { // a polling loop: the same commands and readings again and again
+                    motor.setMotor(1, 0.25);
+                    motor.setMotor(2, 0.25);
+                    bumper.getSingleBumper(4);
+                }
+                motor.setMotor(1, -0.3);
+                waitFor(() -> text.toString().contains("-0.300"));
+            }
+        }
+        List<String> lines = text.toString().lines().toList();
+        assertEquals(4, lines.size(), text.toString());
+        assertTrue(lines.get(0).matches(".*Motor-Controller +setMotor +1 \\+0\\.250  \\(laptop\\)"), lines.get(0));
+        assertTrue(lines.get(1).matches(".*setMotor +2 \\+0\\.250 .*"), lines.get(1));
+        assertTrue(lines.get(2).matches(".*getSingleBumper +<4, 1> .*"), lines.get(2));
+        assertTrue(lines.get(3).matches(".*setMotor +1 -0\\.300 .*"), lines.get(3));
+    }
+
+    @Test
+    void compactModePrintsOneLinePerSecondAndModuleChoosesWhatIsWatched() throws Exception {
+        StringWriter text = new StringWriter();
+        try (MonitoredSpace space = new MonitoredSpace()) {
+            XVSMRuntime robot = space.host("robot-laptop");
+            XVSMRuntime laptop = space.host("laptop");
+            new XVSMBumperModuleLocal(robot, "CaterpillarRobot", "Bumper-Sensor", new FakeHardware.Bumper());
+            MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5()))
+                    .only(List.of("Bumper-Sensor"));
+            assertEquals(1, world.moduleCount());
+            try (ConsoleMonitor monitor = new ConsoleMonitor(world, space.connection(), new PrintWriter(text),
+                    new ConsoleMonitor.Options(false, true))) {
+                XVSMBumperModuleRemote bumper = new XVSMBumperModuleRemote(laptop, "CaterpillarRobot", "Bumper-Sensor");
+                long until = System.nanoTime() + 2_300_000_000L;
+                int calls = 0;
+                while (System.nanoTime() < until) { // a 20 Hz poll
+                    bumper.getSingleBumper(6);
+                    calls++;
+                    Thread.sleep(50);
+                }
+                assertTrue(calls >= 20, "polled " + calls + " times");
+                waitFor(() -> text.toString().contains("calls, last getSingleBumper <6, 1>"));
+            }
+        }
+        List<String> lines = text.toString().lines().toList();
+        assertTrue(lines.size() >= 1 && lines.size() <= 4, "one line per second, not per call:\n" + text);
+        assertTrue(lines.stream().anyMatch(line -> line.matches(
+                "\\d\\d:\\d\\d:\\d\\d  Bumper-Sensor \\d+ calls, last getSingleBumper <6, 1>  \\| alive: CaterpillarRobot")),
+                text.toString());
+        IllegalArgumentException refused = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5())).only(List.of("Nose")));
+        assertTrue(refused.getMessage().startsWith("no module Nose in Chapter5World; its modules: DimRoom/Lamp, "),
+                refused.getMessage());
     }
 
     private static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
