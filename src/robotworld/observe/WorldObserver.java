@@ -11,6 +11,10 @@ public interface WorldObserver {
     default void requestSeen(RequestSeen event) {
     }
 
+    /** The number of requests waiting for a module changed. */
+    default void queueLength(QueueLength event) {
+    }
+
     /** An answer or error answer arrived (a served remote call or a published local call). */
     default void answerSeen(AnswerSeen event) {
     }

@@ -350,7 +350,7 @@ public final class WorldTap implements AutoCloseable {
             Instant now = Instant.now();
             if (notification.operation() == Operation.TAKE) {
                 int count = notification.entries().size();
-                post(() -> modules.get(module).taken(count, nanos));
+                post(() -> modules.get(module).taken(count, now, nanos));
                 return;
             }
             for (Entry entry : notification.entries()) {
@@ -467,6 +467,13 @@ public final class WorldTap implements AutoCloseable {
                 return size() > PENDING_LIMIT;
             }
         };
+        /** Keys answered before their request was seen (the space delivers each container on its own thread). */
+        private final LinkedHashMap<String, Boolean> answeredEarly = new LinkedHashMap<>(16, 0.75f, false) {
+            @Override
+            protected boolean removeEldestEntry(Map.Entry<String, Boolean> eldest) {
+                return size() > 1_000;
+            }
+        };
         private final Set<Integer> moving = new HashSet<>();
         private int queued;
         /** Since when the oldest waiting request waits (nanos), or -1 when none waits. */
@@ -481,6 +488,7 @@ public final class WorldTap implements AutoCloseable {
             if (queued > 0 && waitingSince < 0) {
                 waitingSince = nanos;
             }
+            tellQueue(Instant.now());
         }
 
         void request(CallTuple request, Instant at, long nanos) {
@@ -488,18 +496,30 @@ public final class WorldTap implements AutoCloseable {
             if (waitingSince < 0) {
                 waitingSince = nanos;
             }
-            pending.put(request.key(), nanos);
+            if (answeredEarly.remove(request.key()) == null) {
+                pending.put(request.key(), nanos);
+            }
             RequestSeen event = new RequestSeen(module, request, at, queued);
             each(observer -> observer.requestSeen(event));
+            tellQueue(at);
         }
 
-        void taken(int count, long nanos) {
+        void taken(int count, Instant at, long nanos) {
             queued = Math.max(0, queued - count);
             waitingSince = queued == 0 ? -1 : nanos;
+            tellQueue(at);
+        }
+
+        private void tellQueue(Instant at) {
+            QueueLength event = new QueueLength(module, queued, at);
+            each(observer -> observer.queueLength(event));
         }
 
         void answer(CallTuple answer, Instant at, long nanos, boolean earlier) {
             Long asked = earlier ? null : pending.remove(answer.key());
+            if (asked == null && !earlier && answer.key().indexOf('#') >= 0) {
+                answeredEarly.put(answer.key(), Boolean.TRUE);
+            }
             Duration latency = asked == null || nanos < asked ? null : Duration.ofNanos(nanos - asked);
             AnswerSeen event = new AnswerSeen(module, answer, at, earlier, latency, queued);
             if (!earlier) {

@@ -23,12 +23,14 @@
  *       and its subscription can be missed without a gap; the next one brings observers up to date.</li>
  *   <li>Events carry the time the tap received them. A call's latency is the time between the tap seeing its
  *       request written and its answer arriving, so it is known only for remote calls (a local call on the
- *       module's own computer is published after it happened, without its duration).</li>
+ *       module's own computer is published after it happened, without its duration), and only when the tap heard
+ *       of the request first: the space delivers each container's notifications on a thread of its own, so now
+ *       and then an answer overtakes its request, and then its latency is unknown.</li>
  *   <li>Liveness: a participant is {@link robotworld.observe.Liveness.State#ALIVE} while any of its Local sides
  *       takes requests or publishes answers, {@link robotworld.observe.Liveness.State#NOT_ANSWERING} while a
  *       request to it has waited longer than the liveness window, and
  *       {@link robotworld.observe.Liveness.State#UNKNOWN} while it is quiet (nothing says whether it runs). The
- *       tap reports each change.</li>
+ *       tap reports each change, as it reports each change of a module's queue length.</li>
  *   <li>Replays: a space into which {@code rwe replay} plays a recording holds a {@link robotworld.observe.ReplayMark};
  *       the tap hands it to {@link robotworld.observe.WorldObserver#replay} before any event, and every view
  *       marks what it shows as a replay.</li>

@@ -11,7 +11,7 @@ import robotworld.observe.AnswerSeen;
 import robotworld.observe.Gap;
 import robotworld.observe.Liveness;
 import robotworld.observe.ModuleRef;
-import robotworld.observe.RequestSeen;
+import robotworld.observe.QueueLength;
 import robotworld.observe.WorldLayout;
 import robotworld.observe.WorldObserver;
 
@@ -82,7 +82,7 @@ public final class TrafficStatistics implements WorldObserver {
     }
 
     @Override
-    public synchronized void requestSeen(RequestSeen event) {
+    public synchronized void queueLength(QueueLength event) {
         Counter counter = modules.get(event.module());
         if (counter != null) {
             counter.queued = event.queued();
@@ -95,7 +95,6 @@ public final class TrafficStatistics implements WorldObserver {
         if (counter == null) {
             return;
         }
-        counter.queued = event.queued();
         counter.lastAnswer = robotworld.explorer.monitor.logic.xvsm.AnswerText.function(event.answer()) + " "
                 + robotworld.explorer.monitor.logic.xvsm.AnswerText.value(event.module().moduleClass(),
                 event.answer());

@@ -11,10 +11,12 @@ import java.awt.Color;
 import java.awt.geom.Point2D;
 import java.awt.image.BufferedImage;
 import java.time.Duration;
+import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import robotworld.bus.BumperModuleProxy;
 import robotworld.bus.BusTiming;
 import robotworld.bus.MotorModuleProxy;
@@ -34,6 +36,19 @@ import robotworld.sim.robot.LineTiming;
 import robotworld.sim.robot.SimRobotConfigReader;
 import robotworld.sim.robot.SimulatedRobot;
 import robotworld.testsupport.ProjectFiles;
+import robotworld.bus.IRDistanceModuleProxy;
+import robotworld.bus.ServoModuleProxy;
+import robotworld.core.IRDistanceModule;
+import robotworld.core.ServoModule;
+import robotworld.explorer.monitor.gui.IRDistanceModulePanel;
+import robotworld.xvsm.XVSMIRDistanceModuleLocal;
+import robotworld.xvsm.XVSMIRDistanceModuleRemote;
+import robotworld.xvsm.XVSMServoModuleLocal;
+import robotworld.xvsm.XVSMServoModuleRemote;
+import robotworld.xvsm.XVSMX10ApplianceModuleLocal;
+import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
+import robotworld.xvsm.XVSMX10LampModuleLocal;
+import robotworld.xvsm.XVSMX10LampModuleRemote;
 import robotworld.xvsm.XVSMBumperModuleLocal;
 import robotworld.xvsm.XVSMBumperModuleRemote;
 import robotworld.xvsm.XVSMMotorModuleLocal;
@@ -52,6 +67,9 @@ class WorldViewTest {
     /** The crate of the example robot's arena begins at x = 2000; the body's radius is 150. */
     private static final double STOP_X = 2000 - 150;
 
+    @TempDir
+    Path folder;
+
     private MonitoredSpace space;
     private SimulatedRobot robot;
     private RS485Bus bus;
@@ -69,8 +87,12 @@ class WorldViewTest {
         XVSMRuntime robotLaptop = space.host("robot-laptop");
         new XVSMMotorModuleLocal(robotLaptop, ROBOT, "Motor-Controller", new MotorModuleProxy(bus, 1));
         new XVSMBumperModuleLocal(robotLaptop, ROBOT, "Bumper-Sensor", new BumperModuleProxy(bus, 2));
+        new XVSMServoModuleLocal(robotLaptop, ROBOT, "Head-Servo", new ServoModuleProxy(bus, 3));
+        new XVSMIRDistanceModuleLocal(robotLaptop, ROBOT, "IR-Sensors", new IRDistanceModuleProxy(bus, 4));
+        new XVSMX10ApplianceModuleLocal(space.host("room-pc"), "DimRoom", "Lamp", new FakeHardware.Appliance());
+        new XVSMX10LampModuleLocal(space.host("room-pc"), "DimRoom", "Ceiling", new FakeHardware.Lamp());
         feed = GroundTruthFeed.start(robot, ROBOT, space.connection(), Duration.ofMillis(20));
-        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5()));
+        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.everyModuleType(folder)));
         monitor = onEdt(() -> {
             WorldMonitor opened = new WorldMonitor(world, space.connection(), new MonitorLoader(),
                     WorldMonitor.Windows.ONE, LayoutMemory.none());
@@ -149,6 +171,7 @@ class WorldViewTest {
         // the plots gained the motor commands and the bumper readings
         ModuleRef motorModule = new ModuleRef(ROBOT, "Motor-Controller", "MotorModule");
         eventually("the motor plot has the four commands", () -> {
+            window.plots().reveal(motorModule);
             window.plots().refresh();
             return window.plots().pointsShown(motorModule) >= 4;
         });
@@ -156,11 +179,78 @@ class WorldViewTest {
         motor.setMotor(1, -0.5);
         motor.setMotor(1, 0);
         eventually("it gains the next ones", () -> {
+            window.plots().reveal(motorModule);
             window.plots().refresh();
             return window.plots().pointsShown(motorModule) >= before + 2;
         });
-        assertTrue(onEdt(() -> window.plots().latencyPointsShown()) > 0, "latencies of the remote calls");
+        eventually("latencies of the remote calls", () -> {
+            window.plots().revealLatency();
+            window.plots().refresh();
+            return window.plots().latencyPointsShown() > 0;
+        });
         screenshot(window, "monitor-window-simulated-robot");
+    }
+
+    @Test
+    void theIrPanelAgreesWithTheRaysAndARunningRobotLooksLikeThis() throws Exception {
+        MonitorWindow window = monitor.window();
+        WorldView view = window.worldView();
+        eventually("the first frame is shown", Duration.ofSeconds(10), view::showsGroundTruth);
+        XVSMRuntime laptop = space.host("laptop");
+        MotorModule motor = new XVSMMotorModuleRemote(laptop, ROBOT, "Motor-Controller");
+        IRDistanceModule ir = new XVSMIRDistanceModuleRemote(laptop, ROBOT, "IR-Sensors");
+        ServoModule head = new XVSMServoModuleRemote(laptop, ROBOT, "Head-Servo");
+        new XVSMX10ApplianceModuleRemote(laptop, "DimRoom", "Lamp").on();
+        new XVSMX10LampModuleRemote(laptop, "DimRoom", "Ceiling").on();
+        // a small IR-avoidance program: forward, turn left when something is close ahead
+        long until = System.nanoTime() + Duration.ofSeconds(5).toNanos();
+        int step = 0;
+        while (System.nanoTime() < until) {
+            String[] distances = ir.getAllSensors().split(" ");
+            boolean close = Integer.parseInt(distances[0]) < 250 || Integer.parseInt(distances[2]) < 200;
+            motor.setMotor(1, close ? -0.3 : 0.5);
+            motor.setMotor(2, close ? 0.6 : 0.5);
+            head.setServo(1, 90 + (step++ % 20 - 10) * 4);
+            Thread.sleep(40);
+        }
+        motor.setMotor(1, 0);
+        motor.setMotor(2, 0);
+        Thread.sleep(300); // the robot comes to rest (ramps)
+        String reading = ir.getAllSensors();
+        GroundTruth frame = robotworld.observe.GroundTruthTuples.decode(space.connection().read(
+                space.connection().lookupContainer("CaterpillarRobotGROUNDTRUTH"), robotworld.space.Timeout.TRY_ONCE)
+                .get(0));
+        IRDistanceModulePanel panel = monitor.monitors().stream().map(Monitor::getPanel)
+                .filter(IRDistanceModulePanel.class::isInstance).map(IRDistanceModulePanel.class::cast).findFirst()
+                .orElseThrow();
+        eventually("the IR panel shows the last reading", () -> panel.valueText(1).equals(
+                reading.split(" ")[0] + " mm"));
+        for (GroundTruth.Ray ray : frame.rays()) {
+            int shown = Integer.parseInt(onEdt(() -> panel.valueText(ray.sensor())).replace(" mm", ""));
+            assertEquals(ray.length(), shown, 3.0, "sensor " + ray.sensor() + ": the panel and the world view agree");
+        }
+        eventually("the plots have the IR distances", () -> {
+            window.plots().reveal(new ModuleRef(ROBOT, "IR-Sensors", "IRDistanceModule"));
+            window.plots().refresh();
+            return window.plots().pointsShown(new ModuleRef(ROBOT, "IR-Sensors", "IRDistanceModule")) >= 7 * 10;
+        });
+        Thread.sleep(600);
+        onEdt(() -> {
+            window.plots().refresh();
+            window.statusStrip().refresh();
+            window.tabs().setSelectedIndex(1);
+            window.validate();
+            return null;
+        });
+        screenshot(window, "docs-monitor-window");
+        screenshot(view, "docs-world-view");
+        screenshot(panel, "docs-panel-IRDistanceModule");
+        for (Monitor each : monitor.monitors()) {
+            if (each.getPanel() instanceof robotworld.explorer.monitor.gui.ModulePanel modulePanel
+                    && !(modulePanel instanceof IRDistanceModulePanel)) {
+                screenshot(modulePanel, "docs-panel-" + modulePanel.moduleClass());
+            }
+        }
     }
 
     private static Point2D onRing(Point2D centre, double radius, double degrees) {

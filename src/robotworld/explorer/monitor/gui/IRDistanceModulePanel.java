@@ -37,7 +37,8 @@ public class IRDistanceModulePanel extends ModulePanel {
             JPanel row = new JPanel(new BorderLayout(6, 0));
             JLabel label = new JLabel("Sensor " + (i + 1));
             values[i] = new JLabel(ChannelValuesPanel.UNKNOWN, SwingConstants.RIGHT);
-            values[i].setPreferredSize(new Dimension(62, values[i].getPreferredSize().height));
+            int width = values[i].getFontMetrics(values[i].getFont()).stringWidth("raw 255 mm") + 6;
+            values[i].setPreferredSize(new Dimension(width, values[i].getPreferredSize().height));
             values[i].getAccessibleContext().setAccessibleName("sensor " + (i + 1));
             bars[i] = new ValueBar(0, WorldView.ASSUMED_RANGE, 0, false);
             label.setLabelFor(bars[i]);

@@ -196,6 +196,20 @@ public final class PlotsPanel extends JPanel {
         return charts.get(LATENCY).chart;
     }
 
+    /** Scrolls the chart of {@code module} into view (charts out of view are not kept up to date). */
+    public void reveal(ModuleRef module) {
+        reveal(charts.get(module.label()));
+    }
+
+    /** Scrolls the latency chart into view. */
+    public void revealLatency() {
+        reveal(charts.get(LATENCY));
+    }
+
+    private static void reveal(Chart chart) {
+        chart.panel.scrollRectToVisible(new Rectangle(0, 0, chart.panel.getWidth(), chart.panel.getHeight()));
+    }
+
     /** Points the chart of {@code module} draws now, over all its lines. */
     public int pointsShown(ModuleRef module) {
         return points(charts.get(module.label()));
