@@ -35,7 +35,7 @@ public abstract class ChannelValuesPanel extends ModulePanel {
             JPanel row = new JPanel(new BorderLayout(6, 0));
             JLabel label = new JLabel(channelWord + " " + (i + 1));
             values[i] = new JLabel(UNKNOWN, SwingConstants.RIGHT);
-            int width = values[i].getFontMetrics(values[i].getFont()).stringWidth("-0.000") + 8;
+            int width = values[i].getFontMetrics(values[i].getFont()).stringWidth("+0.000") + 14;
             values[i].setPreferredSize(new Dimension(width, values[i].getPreferredSize().height));
             values[i].setBorder(BorderFactory.createEmptyBorder(0, 0, 0, 2));
             values[i].getAccessibleContext().setAccessibleName(channelWord + " " + (i + 1));
