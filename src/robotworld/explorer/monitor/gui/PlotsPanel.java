@@ -94,7 +94,7 @@ public final class PlotsPanel extends JPanel {
         super(new BorderLayout());
         this.model = model;
         setName("plots");
-        pause.setMnemonic('P');
+        pause.setMnemonic('U'); // Alt+P is the STOP button's, wherever there is one
         pause.setToolTipText("Freeze the plots; values are still collected");
         pause.addActionListener(event -> {
             pause.setText(pause.isSelected() ? "Resume plots" : "Pause plots");
