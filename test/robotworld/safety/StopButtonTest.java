@@ -24,7 +24,6 @@ import robotworld.explorer.gui.GuiTesting;
 import robotworld.explorer.monitor.MonitorLoader;
 import robotworld.explorer.monitor.MonitoredWorld;
 import robotworld.explorer.monitor.WorldMonitor;
-import robotworld.explorer.monitor.gui.ParticipantWindow;
 import robotworld.explorer.stop.StopButton;
 import robotworld.space.Capi;
 import robotworld.space.remote.RemoteSpace;
@@ -76,7 +75,7 @@ class StopButtonTest {
     }
 
     @Test
-    void everyMonitorWindowHasAStopButtonThatStopsTheWorld() throws Exception {
+    void theMonitorWindowHasAStopButtonThatStopsTheWorld() throws Exception {
         try (Capi space = RemoteSpace.open(rig.space.uri())) {
             WorldMonitor monitor = onEdt(() -> {
                 WorldMonitor opened = new WorldMonitor(world, space, new MonitorLoader());
@@ -84,10 +83,15 @@ class StopButtonTest {
                 return opened;
             });
             try {
-                assertEquals(2, monitor.stopButtons().size(), "one per window");
+                assertEquals(1, monitor.stopButtons().size(), "one in the monitor window");
+                assertTrue(onEdt(() -> monitor.stopButtons().get(0).isShowing()), "at the top of the window");
+                WorldMonitor perParticipant = onEdt(() -> new WorldMonitor(world, space, new MonitorLoader(),
+                        WorldMonitor.Windows.PER_PARTICIPANT, robotworld.explorer.monitor.gui.LayoutMemory.none()));
+                assertEquals(2, perParticipant.stopButtons().size(), "one per participant's window");
+                onEdt(perParticipant::close);
                 motor.setMotor(1, 0.6);
-                StopButton button = monitor.stopButtons().get(1);
-                ParticipantWindow window = monitor.windows().get(1);
+                StopButton button = monitor.stopButtons().get(0);
+                javax.swing.JFrame window = monitor.window();
                 onEdt(() -> button.button().doClick());
                 clickedAndEveryActuatorStopped(button);
                 robotworld.explorer.monitor.gui.MotorModulePanel panel =
