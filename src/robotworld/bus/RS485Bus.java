@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
+import java.util.function.IntConsumer;
 import robotworld.bus.modbus.DeviceIdentification;
 import robotworld.bus.modbus.MalformedPduException;
 import robotworld.bus.modbus.Pdus;
@@ -238,7 +239,7 @@ public final class RS485Bus implements Closeable {
      * Who hears of addresses whose exchange was disturbed (a corrupted or cut-short reply while asking them, or
      * bytes starting with their address that were no whole frame): bus exploration asks them again.
      */
-    public void onDisturbance(java.util.function.IntConsumer listener) {
+    public void onDisturbance(IntConsumer listener) {
         master.onDisturbance(listener);
     }
 

@@ -6,6 +6,7 @@ import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
+import java.util.function.IntConsumer;
 import java.util.function.IntFunction;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -92,7 +93,7 @@ final class RtuMaster {
     private final byte[][] owedRequest = new byte[248][];
     private final long[] owedUntil = new long[248];
     private volatile Consumer<RtuFrame> strayListener = frame -> { };
-    private volatile java.util.function.IntConsumer disturbanceListener = address -> { };
+    private volatile IntConsumer disturbanceListener = address -> { };
     private long lineQuietSince = System.nanoTime();
     private Pending pending;
     private boolean linkBroken;
@@ -154,7 +155,7 @@ final class RtuMaster {
      * came, and the address byte of bytes that were no whole frame (perhaps a late reply that was cut). Bus
      * exploration asks them again, so that a module is not lost to noise.
      */
-    void onDisturbance(java.util.function.IntConsumer listener) {
+    void onDisturbance(IntConsumer listener) {
         this.disturbanceListener = listener == null ? address -> { } : listener;
     }
 
