@@ -9,7 +9,6 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
-import java.util.function.IntConsumer;
 import robotworld.bus.modbus.DeviceIdentification;
 import robotworld.bus.modbus.MalformedPduException;
 import robotworld.bus.modbus.Pdus;
@@ -237,10 +236,12 @@ public final class RS485Bus implements Closeable {
 
     /**
      * Who hears of addresses whose exchange was disturbed (a corrupted or cut-short reply while asking them, or
-     * bytes starting with their address that were no whole frame): bus exploration asks them again.
+     * bytes starting with their address that were no whole frame): bus exploration asks them again. The second
+     * argument tells whether the bytes started like a reply from that address (address, then the function asked):
+     * then a module is there.
      */
-    public void onDisturbance(IntConsumer listener) {
-        master.onDisturbance(listener);
+    public void onDisturbance(java.util.function.ObjIntConsumer<Boolean> listener) {
+        master.onDisturbance(listener == null ? null : (address, heard) -> listener.accept(heard, address));
     }
 
     /**
