@@ -236,10 +236,12 @@ public final class RS485Bus implements Closeable {
 
     /**
      * Who hears of addresses whose exchange was disturbed (a corrupted or cut-short reply while asking them, or
-     * bytes starting with their address that were no whole frame): bus exploration asks them again.
+     * bytes starting with their address that were no whole frame): bus exploration asks them again. The second
+     * argument tells whether the bytes started like a reply from that address (address, then the function asked):
+     * then a module is there.
      */
-    public void onDisturbance(java.util.function.IntConsumer listener) {
-        master.onDisturbance(listener);
+    public void onDisturbance(java.util.function.ObjIntConsumer<Boolean> listener) {
+        master.onDisturbance(listener == null ? null : (address, heard) -> listener.accept(heard, address));
     }
 
     /**

@@ -92,7 +92,17 @@ final class RtuMaster {
     private final byte[][] owedRequest = new byte[248][];
     private final long[] owedUntil = new long[248];
     private volatile Consumer<RtuFrame> strayListener = frame -> { };
-    private volatile java.util.function.IntConsumer disturbanceListener = address -> { };
+    private volatile Disturbance disturbanceListener = (address, heard) -> { };
+
+    /** Hears of an address whose exchange was disturbed (see {@link #onDisturbance}). */
+    @FunctionalInterface
+    interface Disturbance {
+        /**
+         * @param heard whether bytes came that start like a reply from it (its address, then the function asked):
+         *        a module is there; otherwise it was only being asked when noise came
+         */
+        void disturbed(int address, boolean heard);
+    }
     private long lineQuietSince = System.nanoTime();
     private Pending pending;
     private boolean linkBroken;
@@ -154,8 +164,8 @@ final class RtuMaster {
      * came, and the address byte of bytes that were no whole frame (perhaps a late reply that was cut). Bus
      * exploration asks them again, so that a module is not lost to noise.
      */
-    void onDisturbance(java.util.function.IntConsumer listener) {
-        this.disturbanceListener = listener == null ? address -> { } : listener;
+    void onDisturbance(Disturbance listener) {
+        this.disturbanceListener = listener == null ? (address, heard) -> { } : listener;
     }
 
     /**
@@ -419,7 +429,7 @@ final class RtuMaster {
         int total = readUntilSilence(have);
         LOG.debug("{}: corrupted reply ({}): {}", describe.apply(address), what, RtuFrame.hex(buffer, total));
         if (address > 0) {
-            disturbed(address);
+            disturbed(address, false);
         }
         salvage(total);
         return Reply.CORRUPT;
@@ -463,7 +473,10 @@ final class RtuMaster {
                     continue;
                 }
                 if (!pieceReported) {
-                    disturbed(address); // perhaps the start of a reply that was cut
+                    // perhaps the start of a reply that was cut: its function code says how likely
+                    boolean heard = start + 1 < have && lastSent != null
+                            && (buffer[start + 1] & 0x7F) == (lastSent[1] & 0x7F);
+                    disturbed(address, heard);
                     pieceReported = true;
                 }
             }
@@ -471,9 +484,9 @@ final class RtuMaster {
         }
     }
 
-    private void disturbed(int address) {
+    private void disturbed(int address, boolean heard) {
         if (address >= 1 && address <= 247) {
-            disturbanceListener.accept(address);
+            disturbanceListener.disturbed(address, heard);
         }
     }
 

@@ -99,23 +99,14 @@ final class PowerLine {
         } else if ((header & X10Constants.HEADER_FUNCTION_BIT) != 0) {
             X10Function function = X10Function.ofCode(code);
             if (function == X10Function.PRESET_DIM_1 || function == X10Function.PRESET_DIM_2) {
-                presetDim(presetLevel(code >> 4, function)); // the "house" nibble is part of the level
+                // the "house" nibble is part of the level
+                presetDim(X10Constants.presetDimLevel(code >> 4, function == X10Function.PRESET_DIM_2));
             } else {
                 function(house, function, header >> X10Constants.HEADER_DIMS_SHIFT);
             }
         } else {
             address(X10Address.ofCode(code));
         }
-    }
-
-    /**
-     * Preset Dim carries a level 0..31 instead of a house: the four bits of the house nibble, read with the bit
-     * order reversed (house codes M, N, O, P, C, D, A, B, E, F, G, H, K, L, I, J are levels 0..15), and Preset
-     * Dim 2 adds 16.
-     */
-    static int presetLevel(int nibble, X10Function function) {
-        int reversed = (nibble & 1) << 3 | (nibble & 2) << 1 | (nibble & 4) >> 1 | (nibble & 8) >> 3;
-        return reversed + (function == X10Function.PRESET_DIM_2 ? 16 : 0);
     }
 
     /** A Preset Dim frame heard on the line: it acts on the modules addressed and not yet given a function. */

@@ -131,8 +131,7 @@ public final class CM11aController implements AutoCloseable {
         if (level < 0 || level > 31) {
             throw new IllegalArgumentException("preset dim level must be 0..31, was " + level);
         }
-        int low = level & 0x0F;
-        int nibble = (low & 1) << 3 | (low & 2) << 1 | (low & 4) >> 1 | (low & 8) >> 3;
+        int nibble = X10Constants.presetDimNibble(level);
         X10Function preset = level < 16 ? X10Function.PRESET_DIM_1 : X10Function.PRESET_DIM_2;
         send(X10Frame.address(address), X10Frame.function(HouseCode.ofCode(nibble), preset));
     }

@@ -51,7 +51,7 @@ final class UploadDecoder {
                 // the "house" nibble is part of the level: the units are those addressed last
                 HouseCode addressedHouse = lastAddressed == null ? house : lastAddressed;
                 events.add(new X10Event(addressedHouse, addressedIn(addressedHouse), function,
-                        presetLevel(value >> 4, function), 0, 0));
+                        X10Constants.presetDimLevel(value >> 4, function == X10Function.PRESET_DIM_2), 0, 0));
                 functionSeen.put(addressedHouse, true);
                 index++;
                 continue;
@@ -66,12 +66,6 @@ final class UploadDecoder {
             index += 1 + extra;
         }
         return events;
-    }
-
-    /** Preset Dim's level 0..31: the nibble's bits in reversed order, plus 16 for Preset Dim 2. */
-    static int presetLevel(int nibble, X10Function function) {
-        int reversed = (nibble & 1) << 3 | (nibble & 2) << 1 | (nibble & 4) >> 1 | (nibble & 8) >> 3;
-        return reversed + (function == X10Function.PRESET_DIM_2 ? 16 : 0);
     }
 
     private void address(HouseCode house, int unit) {

@@ -151,4 +151,21 @@ public final class X10Constants {
     public static boolean looksLikePoll(int value) {
         return value == CM11A_POLL || value == CM11A_POWER_FAIL_POLL;
     }
+
+    /**
+     * Preset Dim's level 0..31 from the code byte's high nibble (its four low bits in reversed order: the nibbles of
+     * house codes M, N, O, P, C, D, A, B, ... are levels 0, 1, 2, 3, ...) and the function (Preset Dim 2 adds 16).
+     */
+    public static int presetDimLevel(int nibble, boolean presetDim2) {
+        return reverseNibble(nibble) + (presetDim2 ? 16 : 0);
+    }
+
+    /** The high nibble that carries the four low bits of Preset Dim level {@code level} (0..31). */
+    public static int presetDimNibble(int level) {
+        return reverseNibble(level & 0x0F);
+    }
+
+    private static int reverseNibble(int nibble) {
+        return (nibble & 1) << 3 | (nibble & 2) << 1 | (nibble & 4) >> 1 | (nibble & 8) >> 3;
+    }
 }

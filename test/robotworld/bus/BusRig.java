@@ -34,8 +34,11 @@ final class BusRig implements AutoCloseable {
               </IRDistance>
             </SimulatedRobot>""";
 
-    /** Master timing for tests: quick to give up, so failure tests stay short. */
-    static final BusTiming TIMING = BusTiming.defaults().withResponseTimeout(Duration.ofMillis(50))
+    /**
+     * Master timing for tests: a reply timeout a busy machine does not eat (a module in fast timing answers at
+     * once), yet failure tests stay short.
+     */
+    static final BusTiming TIMING = BusTiming.defaults().withResponseTimeout(Duration.ofMillis(250))
             .withServoMoveTimeout(Duration.ofSeconds(5));
 
     private final SimulatedRobot robot;

@@ -20,7 +20,8 @@ class LateReplyOverTcpTest {
     @Test
     void aReplyAfterItsTimeoutIsNeverTakenForTheNextCallsAnswer() throws Exception {
         String atTheWall = BusRig.FOUR_MODULES.replace("<Body x=\"500\"", "<Body x=\"1850\"");
-        try (BusRig rig = BusRig.tcp(atTheWall, BusRig.TIMING.withAttempts(1))) { // 50 ms, 1 attempt
+        try (BusRig rig = BusRig.tcp(atTheWall, BusRig.TIMING.withResponseTimeout(Duration.ofMillis(50))
+                .withAttempts(1))) { // 50 ms, 1 attempt
             BumperModuleProxy bumper = new BumperModuleProxy(rig.bus(), 2, "Bumper-Sensor");
             assertEquals(FRONT_BUMPERS, bumper.getAllBumper());
 

@@ -95,9 +95,9 @@ public final class RobotExplorer {
                 late.add(frame.address());
             }
         });
-        bus.onDisturbance(address -> {
+        bus.onDisturbance((heard, address) -> {
             if (address >= firstAddress && address <= lastAddress) {
-                disturbed.add(address);
+                (heard ? late : disturbed).add(address); // heard: the start of its reply came, so it is there
             }
         });
         try {

@@ -1,5 +1,8 @@
 package robotworld.sim.control;
 
+import static robotworld.sim.control.CommandWords.arguments;
+import static robotworld.sim.control.CommandWords.number;
+
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Collectors;
@@ -99,13 +102,6 @@ public final class Cm11aControl implements ControlCommands {
         }
     }
 
-    static void arguments(List<String> words, int count, String form) {
-        if (words.size() != count + 1) {
-            throw new IllegalArgumentException("'" + words.get(0) + "' takes " + count + (count == 1 ? " argument"
-                    : " arguments") + ": " + form);
-        }
-    }
-
     private static X10Address address(String text) {
         try {
             return X10Address.parse(text.toUpperCase(Locale.ROOT));
@@ -137,28 +133,4 @@ public final class Cm11aControl implements ControlCommands {
                 .collect(Collectors.joining(", ")));
     }
 
-    static int number(String text, int min, int max, String what) {
-        try {
-            int value = Integer.parseInt(text);
-            if (value >= min && value <= max) {
-                return value;
-            }
-        } catch (NumberFormatException e) {
-            // below
-        }
-        throw new IllegalArgumentException(what + " must be a whole number " + min + ".." + max + ", not '" + text
-                + "'");
-    }
-
-    static double decimal(String text, String what) {
-        try {
-            double value = Double.parseDouble(text);
-            if (Double.isFinite(value)) {
-                return value;
-            }
-        } catch (NumberFormatException e) {
-            // below
-        }
-        throw new IllegalArgumentException(what + " must be a number, not '" + text + "'");
-    }
 }

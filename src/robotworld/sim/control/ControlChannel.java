@@ -17,6 +17,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robotworld.bus.PortName;
 
 /**
  * Serves a simulator's {@link ControlCommands} as a line protocol (see the package description), from a stream
@@ -53,8 +54,8 @@ public final class ControlChannel implements AutoCloseable {
             channel.serve(System.in, System.out, "stdin");
             return new Opened(channel, "standard input");
         }
-        robotworld.bus.PortName parsed = robotworld.bus.PortName.parseListening(where);
-        if (!(parsed instanceof robotworld.bus.PortName.Tcp tcp)
+        PortName parsed = PortName.parseListening(where);
+        if (!(parsed instanceof PortName.Tcp tcp)
                 || !InetAddress.getByName(tcp.host()).isLoopbackAddress()) {
             throw new IllegalArgumentException("the control channel is stdin or tcp://127.0.0.1:PORT (loopback "
                     + "only), not '" + where + "'");

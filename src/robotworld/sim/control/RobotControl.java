@@ -1,8 +1,8 @@
 package robotworld.sim.control;
 
-import static robotworld.sim.control.Cm11aControl.arguments;
-import static robotworld.sim.control.Cm11aControl.decimal;
-import static robotworld.sim.control.Cm11aControl.number;
+import static robotworld.sim.control.CommandWords.arguments;
+import static robotworld.sim.control.CommandWords.decimal;
+import static robotworld.sim.control.CommandWords.number;
 
 import java.time.Duration;
 import java.util.List;

@@ -5,6 +5,7 @@ import java.time.Duration;
 import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
+import java.util.function.BooleanSupplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robotworld.bus.LinkClosedException;
@@ -32,7 +33,7 @@ final class RtuServerSession implements Runnable {
     private final RtuTiming rtu;
     private final LineTiming timing;
     private final long silenceNanos;
-    private final java.util.function.BooleanSupplier echoRequests;
+    private final BooleanSupplier echoRequests;
     private final AtomicLong requests = new AtomicLong();
     private final byte[] buffer = new byte[2 * RtuFrame.MAX_LENGTH];
     private volatile boolean closed;
@@ -46,7 +47,7 @@ final class RtuServerSession implements Runnable {
      *        adapter without echo suppression does
      */
     RtuServerSession(SerialLink link, Simulation simulation, RtuTiming rtu, LineTiming timing,
-            java.util.function.BooleanSupplier echoRequests) {
+            BooleanSupplier echoRequests) {
         this.echoRequests = echoRequests;
         this.link = link;
         this.simulation = simulation;
