@@ -20,7 +20,7 @@ import org.slf4j.LoggerFactory;
  * written again. So when the program dies hard (SIGKILL, a crash, a pulled cable), its modules stop anyway.
  *
  * <p>Every exchange with a module feeds its watchdog, so a busy bus costs nothing extra. A module that has not
- * been spoken to for a third of its timeout gets a heartbeat: a read of its tripped input (one request of 8
+ * been spoken to for a quarter of its timeout gets a heartbeat: a read of its tripped input (one request of 8
  * bytes, one reply of 6), which also tells whether it tripped meanwhile (the program was frozen too long); then
  * the listener is told and the watchdog armed again. One daemon thread per bus, started with the first armed
  * module and ended by {@link RS485Bus#close()}.
@@ -141,7 +141,7 @@ public final class BusWatchdog implements AutoCloseable {
         while (!closed) {
             long tick = LONGEST_TICK_NANOS;
             for (Armed entry : armed.values()) {
-                tick = Math.min(tick, TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 10);
+                tick = Math.min(tick, TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 20);
             }
             LockSupport.parkNanos(Math.max(SHORTEST_TICK_NANOS, tick));
             if (closed || Thread.currentThread().isInterrupted()) {
@@ -149,7 +149,8 @@ public final class BusWatchdog implements AutoCloseable {
             }
             for (Armed entry : armed.values()) {
                 long idle = System.nanoTime() - lastExchange.get(entry.address());
-                if (idle >= TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 3) {
+                // a quarter: three quarters of the timeout are left for a feeding thread that is slow to get the CPU
+                if (idle >= TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 4) {
                     heartbeat(entry);
                 }
             }

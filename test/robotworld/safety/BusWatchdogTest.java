@@ -76,7 +76,9 @@ class BusWatchdogTest {
 
     @Test
     void aProgramKilledWithSigkillLeavesItsMotorsToTheWatchdog() throws Exception {
-        try (ChildProgram child = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        // only the watchdog: a command timeout (for a lost space) no busy machine reaches
+        try (ChildProgram child = ChildProgram.start(temp, List.of("-Drwe.command.timeout.ms=60000"), SafetyChild.class,
+                "serve", "wait",
                 rig.spaceUrl, rig.busPort)) {
             child.awaitLine("READY", Duration.ofSeconds(60));
             assertEquals(450, rig.motorSpeed(1));
