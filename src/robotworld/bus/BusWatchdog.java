@@ -20,7 +20,7 @@ import org.slf4j.LoggerFactory;
  * written again. So when the program dies hard (SIGKILL, a crash, a pulled cable), its modules stop anyway.
  *
  * <p>Every exchange with a module feeds its watchdog, so a busy bus costs nothing extra. A module that has not
- * been spoken to for a third of its timeout gets a heartbeat: a read of its tripped input (one request of 8
+ * been spoken to for a quarter of its timeout gets a heartbeat: a read of its tripped input (one request of 8
  * bytes, one reply of 6), which also tells whether it tripped meanwhile (the program was frozen too long); then
  * the listener is told and the watchdog armed again. One daemon thread per bus, started with the first armed
  * module and ended by {@link RS485Bus#close()}.
@@ -42,6 +42,9 @@ public final class BusWatchdog implements AutoCloseable {
     private final RS485Bus bus;
     private final AtomicLongArray lastExchange = new AtomicLongArray(248);
     private final Map<Integer, Armed> armed = new ConcurrentHashMap<>();
+    /** Modules that did not answer when they were to be armed: tried again every second. */
+    private final Map<Integer, Armed> pending = new ConcurrentHashMap<>();
+    private long lastPendingTry;
     private final AtomicLong heartbeats = new AtomicLong();
     private final AtomicLong failedHeartbeats = new AtomicLong();
     private Thread feeder;
@@ -58,12 +61,13 @@ public final class BusWatchdog implements AutoCloseable {
 
     /**
      * Arms the watchdog of the module at {@code address}. That it had tripped before (its previous master went
-     * silent or ended) is only logged: it happened before this program, which has commanded nothing yet.
+     * silent or ended) is only logged: it happened before this program, which has commanded nothing yet. A module
+     * that does not answer now is logged and armed as soon as it answers (tried every second), so a program does
+     * not fail to start for a module that is off for a moment.
      *
      * @param timeout 10..65535 ms
      * @param onTrip  told, with a sentence, whenever the module's watchdog is found tripped
      * @return false when the module has no watchdog (it refuses the register); it is then logged once
-     * @throws BusException when the module does not answer
      */
     public boolean arm(int address, Duration timeout, Consumer<String> onTrip) {
         Objects.requireNonNull(onTrip, "onTrip");
@@ -71,10 +75,30 @@ public final class BusWatchdog implements AutoCloseable {
         if (millis < 10 || millis > 65_535) {
             throw new IllegalArgumentException("a watchdog timeout is 10..65535 ms, was " + millis);
         }
+        Armed entry = new Armed(address, (int) millis, onTrip);
+        try {
+            return armNow(entry);
+        } catch (BusException noAnswer) {
+            LOG.warn("{} on {} did not answer when its communication watchdog was to be armed ({}); trying again "
+                    + "every second", bus.describe(address), bus.portName(), noAnswer.getMessage());
+            pending.put(address, entry);
+            startFeeder();
+            return true;
+        }
+    }
+
+    /**
+     * Arms the module's watchdog now.
+     *
+     * @return false when it has none
+     * @throws BusException when it does not answer
+     */
+    private boolean armNow(Armed entry) {
+        int address = entry.address();
         boolean trippedBefore;
         try {
             trippedBefore = bus.readDiscreteInputs(address, TRIPPED_INPUT, 1)[0];
-            bus.writeRegister(address, TIMEOUT_REGISTER, (int) millis);
+            bus.writeRegister(address, TIMEOUT_REGISTER, entry.millis());
         } catch (ModuleRefusedException refused) {
             LOG.warn("{} on {} has no communication watchdog ({}): it will not stop by itself if this program dies",
                     bus.describe(address), bus.portName(), refused.getMessage());
@@ -84,7 +108,7 @@ public final class BusWatchdog implements AutoCloseable {
             LOG.info("{} on {}: its communication watchdog had tripped before this program armed it (its previous "
                     + "master went silent or ended)", bus.describe(address), bus.portName());
         }
-        armed.put(address, new Armed(address, (int) millis, onTrip));
+        armed.put(address, entry);
         startFeeder();
         return true;
     }
@@ -92,6 +116,7 @@ public final class BusWatchdog implements AutoCloseable {
     /** Stops feeding the module's watchdog; it stays armed in the module, which stops when the timeout runs out. */
     public void release(int address) {
         armed.remove(address);
+        pending.remove(address);
     }
 
     /** The timeout the watchdog of {@code address} was armed with, in ms; 0 when not armed by this program. */
@@ -141,17 +166,38 @@ public final class BusWatchdog implements AutoCloseable {
         while (!closed) {
             long tick = LONGEST_TICK_NANOS;
             for (Armed entry : armed.values()) {
-                tick = Math.min(tick, TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 10);
+                tick = Math.min(tick, TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 20);
             }
             LockSupport.parkNanos(Math.max(SHORTEST_TICK_NANOS, tick));
             if (closed || Thread.currentThread().isInterrupted()) {
                 return;
             }
+            armPending();
             for (Armed entry : armed.values()) {
                 long idle = System.nanoTime() - lastExchange.get(entry.address());
-                if (idle >= TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 3) {
+                // a quarter: three quarters of the timeout are left for a feeding thread that is slow to get the CPU
+                if (idle >= TimeUnit.MILLISECONDS.toNanos(entry.millis()) / 4) {
                     heartbeat(entry);
                 }
+            }
+        }
+    }
+
+    private void armPending() {
+        if (pending.isEmpty() || System.nanoTime() - lastPendingTry < TimeUnit.SECONDS.toNanos(1)) {
+            return;
+        }
+        lastPendingTry = System.nanoTime();
+        for (Armed entry : pending.values()) {
+            try {
+                boolean has = armNow(entry);
+                pending.remove(entry.address());
+                if (has) {
+                    LOG.info("{} on {} answers again: its communication watchdog is armed", bus.describe(entry.address()),
+                            bus.portName());
+                }
+            } catch (RuntimeException stillSilent) {
+                // tried again in a second
             }
         }
     }

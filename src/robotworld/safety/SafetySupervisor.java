@@ -84,6 +84,8 @@ public final class SafetySupervisor implements AutoCloseable {
     private final List<StopRecord> recent = new CopyOnWriteArrayList<>();
     private volatile Duration defaultCommandTimeout;
     private volatile long lastContactNanos = System.nanoTime();
+    /** When the last heartbeat was begun; later than {@link #lastContactNanos} while one is under way or failed. */
+    private volatile long attemptNanos;
     private volatile boolean spaceLost;
     private volatile ContainerRef liveness;
     private volatile Subscription stopRequests;
@@ -108,9 +110,24 @@ public final class SafetySupervisor implements AutoCloseable {
         this.link = executor(space == null ? 1 : 2, "safety-link " + host);
         this.watch = executor(1, "safety-watch " + host);
         if (!heartbeatPeriod.isZero()) {
-            periodic.add(link.scheduleWithFixedDelay(this::beat, 0, heartbeatPeriod.toMillis(),
+            // the first one here: it creates the liveness container and warms the connection up, so a cold start on
+            // a busy machine is not taken for a lost space
+            try {
+                sendHeartbeat(false, Timeout.ofMillis(Math.max(1_000, heartbeatPeriod.toMillis() * 5)));
+            } catch (SpaceException e) {
+                LOG.warn("the first heartbeat of {} failed: {}", ownId, e.toString());
+            }
+            periodic.add(link.scheduleWithFixedDelay(this::beat, heartbeatPeriod.toMillis(), heartbeatPeriod.toMillis(),
                     TimeUnit.MILLISECONDS));
         }
+    }
+
+    /**
+     * The program's space, as its proxies should use it: every answer of the space counts as contact for the rule
+     * that stops actuators when the space is lost, so a busy program is never taken for a cut-off one.
+     */
+    public Capi tracking(Capi space) {
+        return new ContactTrackingSpace(space, this::contact);
     }
 
     /** The program's id: {@code host#run}. */
@@ -349,6 +366,7 @@ public final class SafetySupervisor implements AutoCloseable {
         Heartbeat heartbeat = new Heartbeat(ownId, host, modules, ended, sequence.incrementAndGet(),
                 heartbeatPeriod.toMillis(), System.currentTimeMillis());
         List<Item> items = List.of(Item.keyed(ownId, heartbeat.toTuple()));
+        attemptNanos = System.nanoTime();
         try {
             space.shift(liveness(), timeout, items);
         } catch (ContainerNotFoundException gone) {
@@ -369,7 +387,10 @@ public final class SafetySupervisor implements AutoCloseable {
 
     /** The space answered: rule 4 starts counting again. */
     private void contact() {
-        lastContactNanos = System.nanoTime();
+        long now = System.nanoTime();
+        if (now - lastContactNanos > 0) {
+            lastContactNanos = now;
+        }
         if (spaceLost) {
             spaceLost = false;
             LOG.info("{} reaches its space {} again; stopped actuators stay stopped until commanded again", ownId,
@@ -473,13 +494,17 @@ public final class SafetySupervisor implements AutoCloseable {
     private void check() {
         try {
             long now = System.nanoTime();
-            long sinceContact = now - lastContactNanos;
+            long contact = lastContactNanos;
+            long sinceContact = now - contact;
+            // judged only while a heartbeat begun after the last contact is under way or has failed: a heartbeat
+            // thread that simply did not get the CPU is no evidence of a lost space
+            boolean overdue = attemptNanos - contact > 0;
             for (ActuatorGuard guard : guards) {
                 if (!guard.isEngaged() || guard.hasEnded() || !guard.mayRetryStop()) {
                     continue;
                 }
                 long timeout = guard.commandTimeout().toNanos();
-                if (!heartbeatPeriod.isZero() && sinceContact > timeout) {
+                if (!heartbeatPeriod.isZero() && overdue && sinceContact > timeout) {
                     spaceLost(sinceContact);
                     guard.stop(StopCause.SPACE_LOST, "no contact with the space " + space.spaceUri() + " for "
                             + millis(sinceContact) + " ms (command timeout " + guard.commandTimeout().toMillis()

@@ -39,7 +39,7 @@ public abstract class XVSMModule implements AutoCloseable {
         this.moduleName = requireName(moduleName, "module name");
         this.requestName = requestContainerName(participant, moduleName);
         this.answerName = answerContainerName(participant, moduleName);
-        this.containers = new ModuleContainers(runtime.space(), requestName, answerName);
+        this.containers = new ModuleContainers(runtime.moduleSpace(), requestName, answerName);
         runtime.register(this);
     }
 

@@ -52,6 +52,8 @@ public final class XVSMRuntime implements AutoCloseable {
     private static final long PUBLISH_GRACE_MILLIS = 1_000;
 
     private final Capi space;
+    /** The space as the module proxies use it: every answer counts as contact for the safety layer. */
+    private final Capi moduleSpace;
     private final boolean ownsSpace;
     private final String hostName;
     private final RuntimeSettings settings;
@@ -92,6 +94,8 @@ public final class XVSMRuntime implements AutoCloseable {
         this.programId = hostName + "#" + Long.toString(ThreadLocalRandom.current().nextLong() >>> 28, 36);
         this.callKeyPrefix = programId + ".";
         this.safety = new SafetySupervisor(space, programId, hostName, SafetySettings.fromSystem());
+        // every answer of the space proves it reachable: a busy program is never taken for a cut-off one
+        this.moduleSpace = safety.tracking(space);
     }
 
     /**
@@ -130,6 +134,11 @@ public final class XVSMRuntime implements AutoCloseable {
     /** The space this runtime works on. */
     public Capi space() {
         return space;
+    }
+
+    /** The space for the module proxies: {@link #space()}, telling the safety layer of every answer. */
+    Capi moduleSpace() {
+        return moduleSpace;
     }
 
     /** This computer's name in the space: the key of its requests and of its published local calls. */

@@ -75,8 +75,25 @@ class BusWatchdogTest {
     }
 
     @Test
+    void aModuleSilentWhenItIsArmedIsArmedWhenItAnswersAgain() throws Exception {
+        try (XVSMRuntime runtime = XVSMRuntime.connect(rig.spaceUrl, "robot-pc")) {
+            RS485Bus bus = runtime.own(bus());
+            rig.robot.faults(1).silent(true);
+            runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.MOTOR,
+                    new MotorModuleProxy(bus, 1, SafetyRig.MOTOR))); // the program starts anyway
+            assertEquals(0, rig.robot.module(1).watchdogMillis());
+            rig.robot.faults(1).silent(false);
+            eventually("armed once it answers", () -> rig.robot.module(1).watchdogMillis()
+                    == SafetySettings.DEFAULT_MOTOR_WATCHDOG_MILLIS);
+            eventually("and fed", () -> bus.watchdog().armedMillis(1) == SafetySettings.DEFAULT_MOTOR_WATCHDOG_MILLIS);
+        }
+    }
+
+    @Test
     void aProgramKilledWithSigkillLeavesItsMotorsToTheWatchdog() throws Exception {
-        try (ChildProgram child = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        // only the watchdog: a command timeout (for a lost space) no busy machine reaches
+        try (ChildProgram child = ChildProgram.start(temp, List.of("-Drwe.command.timeout.ms=60000"), SafetyChild.class,
+                "serve", "wait",
                 rig.spaceUrl, rig.busPort)) {
             child.awaitLine("READY", Duration.ofSeconds(60));
             assertEquals(450, rig.motorSpeed(1));

@@ -118,7 +118,7 @@ class CleanExitTest {
 
     @Test
     void aProgramStoppedWithSigtermStopsItsMotors() throws Exception {
-        try (ChildProgram child = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        try (ChildProgram child = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "serve", "wait",
                 rig.spaceUrl, rig.busPort)) {
             child.awaitLine("READY", START);
             assertEquals(450, rig.motorSpeed(1));
@@ -132,7 +132,7 @@ class CleanExitTest {
 
     /** Runs the child in {@code mode}; checks its exit code and that the motors are at 0 when it has ended. */
     private String childEndsAndMotorsAreStopped(String mode, int exitCode) throws Exception {
-        try (ChildProgram child = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", mode,
+        try (ChildProgram child = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "serve", mode,
                 rig.spaceUrl, rig.busPort)) {
             int exit = child.awaitExit(START);
             String output = child.output();
@@ -145,6 +145,7 @@ class CleanExitTest {
     }
 
     private XVSMMotorModuleLocal serveMotor(XVSMRuntime runtime) throws Exception {
+        SafetyRig.relax(runtime);
         RS485Bus bus = runtime.own(new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
                 BusTiming.defaults().withFrameGap(Duration.ZERO)));
         return runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.MOTOR,

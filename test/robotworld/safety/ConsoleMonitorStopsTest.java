@@ -36,6 +36,7 @@ class ConsoleMonitorStopsTest {
              XVSMRuntime robot = XVSMRuntime.connect(rig.spaceUrl, "robot-pc")) {
             MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(
                     rig.writeWorld(temp.resolve("world.xml")), DescriptionSchemas.configured()));
+            SafetyRig.relax(robot);
             RS485Bus bus = robot.own(new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
                     BusTiming.defaults().withFrameGap(Duration.ZERO)));
             XVSMMotorModuleLocal motor = robot.own(new XVSMMotorModuleLocal(robot, SafetyRig.ROBOT, SafetyRig.MOTOR,

@@ -38,6 +38,18 @@ final class SafetyRig implements AutoCloseable {
               <Servo address="3" speed="90"/>
             </SimulatedRobot>""";
 
+    /**
+     * For a child program whose test is not about the bus watchdog nor the command timeout: long ones, so that a
+     * machine too busy to feed a watchdog in time does not stop the robot in the middle of another test.
+     */
+    static final java.util.List<String> RELAXED = java.util.List.of("-Drwe.watchdog.ms.SafetyBot.Motor=10000",
+            "-Drwe.command.timeout.ms=60000");
+
+    /** {@link #RELAXED} for a program in this JVM: call before the motor is served. */
+    static void relax(robotworld.xvsm.XVSMRuntime runtime) {
+        runtime.safety().describe(ROBOT, MOTOR, new ModuleSafety(60_000, 10_000, null));
+    }
+
     final SpaceServer space;
     final SimulatedRobot robot;
     final SimulatedCm11a cm11a;

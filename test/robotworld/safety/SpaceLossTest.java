@@ -22,6 +22,8 @@ import robotworld.testsupport.TestPeers;
 class SpaceLossTest {
 
     private static final Duration START = Duration.ofSeconds(60);
+    /** Not about the bus watchdog: a long one, so that only the lost space stops the motors. */
+    private static final List<String> NO_WATCHDOG = List.of("-Drwe.watchdog.ms.SafetyBot.Motor=10000");
 
     @TempDir
     Path temp;
@@ -40,7 +42,7 @@ class SpaceLossTest {
 
     @Test
     void aProviderWhoseSpaceServerIsGoneStopsItsMotorsAndSaysSoOnce() throws Exception {
-        try (ChildProgram provider = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        try (ChildProgram provider = ChildProgram.start(temp, NO_WATCHDOG, SafetyChild.class, "serve", "wait",
                 rig.spaceUrl, rig.busPort)) {
             provider.awaitLine("READY", START);
             assertEquals(450, rig.motorSpeed(1));
@@ -62,7 +64,7 @@ class SpaceLossTest {
             space.awaitLine("space server listening on ", START);
             String url = space.output().lines().filter(l -> l.startsWith("space server listening on ")).findFirst()
                     .orElseThrow().substring("space server listening on ".length()).split(" ")[0];
-            try (ChildProgram provider = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+            try (ChildProgram provider = ChildProgram.start(temp, NO_WATCHDOG, SafetyChild.class, "serve", "wait",
                     url, rig.busPort)) {
                 provider.awaitLine("READY", START);
                 assertEquals(450, rig.motorSpeed(1));

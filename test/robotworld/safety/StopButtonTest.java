@@ -54,6 +54,7 @@ class StopButtonTest {
         worldFile = rig.writeWorld(temp.resolve("safety-world.xml"));
         world = MonitoredWorld.of(DescriptionLoader.loadWorld(worldFile, DescriptionSchemas.configured()));
         robot = XVSMRuntime.connect(rig.spaceUrl, "robot-pc");
+        SafetyRig.relax(robot);
         RS485Bus bus = robot.own(new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
                 BusTiming.defaults().withFrameGap(Duration.ZERO)));
         motor = robot.own(new XVSMMotorModuleLocal(robot, SafetyRig.ROBOT, SafetyRig.MOTOR,

@@ -48,9 +48,9 @@ class WorldStopTest {
     @Test
     void rweStopFromAThirdProgramStopsEveryActuatorAndReportsEachModule() throws Exception {
         Path world = rig.writeWorld(temp.resolve("safety-world.xml"));
-        try (ChildProgram robot = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        try (ChildProgram robot = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "serve", "wait",
                 rig.spaceUrl, rig.busPort);
-             ChildProgram room = ChildProgram.start(temp, List.of(), SafetyChild.class, "room", rig.spaceUrl,
+             ChildProgram room = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "room", rig.spaceUrl,
                      rig.x10Port)) {
             robot.awaitLine("READY", START);
             room.awaitLine("READY", START);
@@ -78,7 +78,7 @@ class WorldStopTest {
     @Test
     void rweStopSaysWhichActuatorsItCouldNotReachAndFails() throws Exception {
         Path world = rig.writeWorld(temp.resolve("safety-world.xml"));
-        try (ChildProgram robot = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        try (ChildProgram robot = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "serve", "wait",
                 rig.spaceUrl, rig.busPort)) {
             robot.awaitLine("READY", START);
             StringWriter out = new StringWriter();
@@ -95,7 +95,7 @@ class WorldStopTest {
 
     @Test
     void aStoppedCommanderIsToldOnItsNextCallAndMayCommandAgain() throws Exception {
-        try (ChildProgram robot = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        try (ChildProgram robot = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "serve", "wait",
                 rig.spaceUrl, rig.busPort);
              XVSMRuntime laptop = XVSMRuntime.connect(rig.spaceUrl, "laptop");
              Capi ops = RemoteSpace.open(rig.space.uri())) {
@@ -117,7 +117,7 @@ class WorldStopTest {
 
     @Test
     void aStopOfOneWorldLeavesTheActuatorsOfOthersAlone() throws Exception {
-        try (ChildProgram robot = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        try (ChildProgram robot = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "serve", "wait",
                 rig.spaceUrl, rig.busPort);
              Capi ops = RemoteSpace.open(rig.space.uri())) {
             robot.awaitLine("READY", START);
@@ -131,7 +131,7 @@ class WorldStopTest {
 
     @Test
     void theStopRecordsSayWhoStoppedWhatAndWhy() throws Exception {
-        try (ChildProgram robot = ChildProgram.start(temp, List.of(), SafetyChild.class, "serve", "wait",
+        try (ChildProgram robot = ChildProgram.start(temp, SafetyRig.RELAXED, SafetyChild.class, "serve", "wait",
                 rig.spaceUrl, rig.busPort);
              Capi ops = RemoteSpace.open(rig.space.uri())) {
             robot.awaitLine("READY", START);
