@@ -36,7 +36,7 @@
       <xsl:sort select="."/>
       <xsl:text>import robotworld.core.</xsl:text><xsl:value-of select="gen:identifier(.)"/><xsl:text>;&#10;</xsl:text>
     </xsl:for-each>
-    <xsl:text>import robotworld.core.RuntimeSettings;&#10;&#10;</xsl:text>
+    <xsl:text>import robotworld.program.ParticipantMain;&#10;&#10;</xsl:text>
     <xsl:text>/**&#10; * </xsl:text>
     <xsl:value-of select="if ($self/self::rw:RobotDescription) then 'Robot ' else 'Environment '"/>
     <xsl:value-of select="gen:comment($participant)"/>
@@ -45,7 +45,13 @@
     <xsl:text>    /** Name of this participant. */&#10;    public static final String NAME = </xsl:text>
     <xsl:value-of select="gen:java-string($participant)"/><xsl:text>;&#10;</xsl:text>
     <xsl:for-each select="$modules">
-      <xsl:text>&#10;    /** </xsl:text><xsl:value-of select="gen:comment(rw:Name)"/><xsl:text>. */&#10;</xsl:text>
+      <xsl:text>&#10;    /**&#10;     * </xsl:text><xsl:value-of select="gen:comment(rw:Name)"/><xsl:text>.</xsl:text>
+      <xsl:if test="@gen:page">
+        <xsl:text>&#10;     * Documentation: </xsl:text><xsl:value-of select="gen:comment(@gen:page)"/>
+        <xsl:if test="not(contains(@gen:page, '://'))"><xsl:text> in this project (index: docs/index.md)</xsl:text></xsl:if>
+        <xsl:text>.</xsl:text>
+      </xsl:if>
+      <xsl:text>&#10;     */&#10;</xsl:text>
       <xsl:text>    public final </xsl:text><xsl:value-of select="gen:identifier(rw:Class)"/><xsl:text> </xsl:text>
       <xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text>;&#10;</xsl:text>
     </xsl:for-each>
@@ -59,17 +65,17 @@
     </xsl:if>
     <xsl:text>&#10;    /** Puts the actuators into their safe state however the program ends (docs/safety.md). */&#10;</xsl:text>
     <xsl:text>    private final robotworld.safety.HardwareSafety safety = robotworld.safety.HardwareSafety.forProgram(NAME);&#10;</xsl:text>
-    <xsl:text>&#10;    /** Opens the hardware; ports come from the description unless overridden (see RuntimeSettings). */&#10;</xsl:text>
+    <xsl:text>&#10;    /** Opens the hardware; ports come from the description unless overridden (-Drwe.port.NAME.bus, -Drwe.port.NAME.x10). */&#10;</xsl:text>
     <xsl:text>    public </xsl:text><xsl:value-of select="$class"/><xsl:text>() throws Exception {&#10;</xsl:text>
-    <xsl:text>        RuntimeSettings settings = RuntimeSettings.fromSystem();&#10;</xsl:text>
     <xsl:if test="$self/rw:Module">
       <xsl:variable name="bus-port" select="($self/rw:BusPort, $self/rw:COMPort[parent::rw:RobotDescription])[1]"/>
-      <xsl:text>        bus = new </xsl:text><xsl:value-of select="$bus-class"/><xsl:text>(settings.port(NAME, "bus", </xsl:text>
-      <xsl:value-of select="if ($bus-port) then gen:java-string($bus-port) else 'null'"/><xsl:text>));&#10;</xsl:text>
+      <xsl:text>        bus = ParticipantMain.open(NAME, "bus", </xsl:text>
+      <xsl:value-of select="if ($bus-port) then gen:java-string($bus-port) else 'null'"/><xsl:text>, </xsl:text>
+      <xsl:value-of select="$bus-class"/><xsl:text>::new);&#10;</xsl:text>
     </xsl:if>
     <xsl:if test="$self/rw:X10Module">
-      <xsl:text>        x10 = robotworld.x10.CM11aController.open(settings.port(NAME, "x10", </xsl:text>
-      <xsl:value-of select="gen:java-string($self/rw:COMPort)"/><xsl:text>));&#10;</xsl:text>
+      <xsl:text>        x10 = ParticipantMain.open(NAME, "x10", </xsl:text>
+      <xsl:value-of select="gen:java-string($self/rw:COMPort)"/><xsl:text>, robotworld.x10.CM11aController::open);&#10;</xsl:text>
     </xsl:if>
     <xsl:for-each select="$self/rw:Module">
       <xsl:apply-templates select="rw:Safety"/>
@@ -86,13 +92,16 @@
       <xsl:text>', </xsl:text><xsl:value-of select="index-of($units, string(rw:UnitCode))"/><xsl:text>));&#10;</xsl:text>
     </xsl:for-each>
     <xsl:text>    }&#10;&#10;</xsl:text>
-    <xsl:text>    /**&#10;     * Opens the hardware, runs the control program, and closes the hardware again. However the program ends&#10;</xsl:text>
-    <xsl:text>     * (return, exception, Ctrl-C, SIGTERM, System.exit), its actuators are put into their safe state first.&#10;     */&#10;</xsl:text>
-    <xsl:text>    public static void main(String[] args) throws Exception {&#10;</xsl:text>
-    <xsl:text>        try (</xsl:text><xsl:value-of select="$class"/><xsl:text> program = new </xsl:text><xsl:value-of select="$class"/>
-    <xsl:text>()) {&#10;            try {&#10;                program.control();&#10;            } catch (Throwable failure) {&#10;</xsl:text>
-    <xsl:text>                program.safety.failed(failure);&#10;                throw failure;&#10;            }&#10;        }&#10;    }&#10;&#10;</xsl:text>
-    <xsl:text>    /** The control program; the modules are the fields of this class. */&#10;</xsl:text>
+    <xsl:text>    /**&#10;     * Opens the hardware, runs the control program, closes the hardware again and ends; a failure ends the&#10;</xsl:text>
+    <xsl:text>     * program with a short report that names the fix (-Drwe.debug=true adds the stack trace). However the&#10;</xsl:text>
+    <xsl:text>     * program ends (return, exception, Ctrl-C, SIGTERM, System.exit), its actuators are put into their safe&#10;</xsl:text>
+    <xsl:text>     * state first.&#10;     */&#10;</xsl:text>
+    <xsl:text>    public static void main(String[] args) {&#10;        ParticipantMain.run(NAME, () -> {&#10;</xsl:text>
+    <xsl:text>            try (</xsl:text><xsl:value-of select="$class"/><xsl:text> program = new </xsl:text><xsl:value-of select="$class"/>
+    <xsl:text>()) {&#10;                try {&#10;                    program.control();&#10;                } catch (Throwable failure) {&#10;</xsl:text>
+    <xsl:text>                    program.safety.failed(failure);&#10;                    throw failure;&#10;                }&#10;</xsl:text>
+    <xsl:text>            }&#10;        });&#10;    }&#10;&#10;</xsl:text>
+    <xsl:text>    /** The control program; the modules are the fields of this class. Write it between the markers. */&#10;</xsl:text>
     <xsl:text>    public void control() throws Exception {&#10;</xsl:text>
     <xsl:text>        // >>> control logic begins here&#10;</xsl:text>
     <xsl:text>        // &lt;&lt;&lt; control logic ends here&#10;</xsl:text>

@@ -82,6 +82,7 @@
 
   <xsl:template name="viewpoint-class">
     <xsl:variable name="others" select="$participants except $self"/>
+    <xsl:text>import robotworld.program.ParticipantMain;&#10;</xsl:text>
     <xsl:text>import robotworld.xvsm.XVSMRuntime;&#10;</xsl:text>
     <xsl:call-template name="imports">
       <xsl:with-param name="modules" select="gen:modules($participants)"/>
@@ -96,9 +97,10 @@
     <xsl:call-template name="space-constants"/>
     <xsl:call-template name="fields"><xsl:with-param name="modules" select="gen:modules($self)"/></xsl:call-template>
     <xsl:call-template name="other-participant-fields"><xsl:with-param name="others" select="$others"/></xsl:call-template>
+    <xsl:call-template name="runtime-field"/>
     <xsl:text>&#10;    /** Opens this computer's hardware, serves it through the space, and connects to the rest of the world. */&#10;</xsl:text>
     <xsl:text>    public </xsl:text><xsl:value-of select="gen:identifier($class-name)"/>
-    <xsl:text>(XVSMRuntime runtime) throws Exception {&#10;</xsl:text>
+    <xsl:text>(XVSMRuntime runtime) throws Exception {&#10;        this.runtime = runtime;&#10;</xsl:text>
     <xsl:apply-templates select="$self" mode="open-hardware"/>
     <xsl:call-template name="connect-others"><xsl:with-param name="others" select="$others"/></xsl:call-template>
     <xsl:text>    }&#10;</xsl:text>
@@ -109,6 +111,7 @@
   <!-- ===== external viewpoint: owns nothing, reaches everything remotely ===== -->
 
   <xsl:template name="external-class">
+    <xsl:text>import robotworld.program.ParticipantMain;&#10;</xsl:text>
     <xsl:text>import robotworld.xvsm.XVSMRuntime;&#10;</xsl:text>
     <xsl:call-template name="imports"><xsl:with-param name="modules" select="gen:modules($participants)"/></xsl:call-template>
     <xsl:text>&#10;/**&#10; * External viewpoint of the RobotWorld </xsl:text><xsl:value-of select="gen:comment($world/rw:WorldName)"/>
@@ -118,9 +121,10 @@
     <xsl:value-of select="gen:java-string($class-name)"/><xsl:text>;&#10;</xsl:text>
     <xsl:call-template name="space-constants"><xsl:with-param name="host" select="()"/></xsl:call-template>
     <xsl:call-template name="other-participant-fields"><xsl:with-param name="others" select="$participants"/></xsl:call-template>
+    <xsl:call-template name="runtime-field"/>
     <xsl:text>&#10;    /** Connects to every participant of the world through the space. */&#10;</xsl:text>
     <xsl:text>    public </xsl:text><xsl:value-of select="gen:identifier($class-name)"/>
-    <xsl:text>(XVSMRuntime runtime) {&#10;</xsl:text>
+    <xsl:text>(XVSMRuntime runtime) {&#10;        this.runtime = runtime;&#10;</xsl:text>
     <xsl:call-template name="connect-others"><xsl:with-param name="others" select="$participants"/></xsl:call-template>
     <xsl:text>    }&#10;</xsl:text>
     <xsl:call-template name="main-and-control"/>
@@ -160,6 +164,11 @@
     <xsl:value-of select="gen:java-string($participant)"/><xsl:text>;&#10;</xsl:text>
   </xsl:template>
 
+  <xsl:template name="runtime-field">
+    <xsl:text>&#10;    /** This program's connection to the space (call timeouts, serving, ...). */&#10;</xsl:text>
+    <xsl:text>    protected final XVSMRuntime runtime;&#10;</xsl:text>
+  </xsl:template>
+
   <xsl:template name="space-constants">
     <xsl:param name="host" as="xs:string?" select="if ($self/rw:Host) then gen:host($self/rw:Host) else ()"/>
     <xsl:text>    /** The space from the description; override with -Drwe.space.url=... or RWE_SPACE_URL. */&#10;</xsl:text>
@@ -173,7 +182,7 @@
   <xsl:template name="fields">
     <xsl:param name="modules" as="element()*"/>
     <xsl:for-each select="$modules">
-      <xsl:text>&#10;    /** </xsl:text><xsl:apply-templates select="." mode="module-summary"/><xsl:text> */&#10;</xsl:text>
+      <xsl:text>&#10;    /**&#10;     * </xsl:text><xsl:apply-templates select="." mode="module-summary"/><xsl:text>&#10;     */&#10;</xsl:text>
       <xsl:text>    public final </xsl:text><xsl:value-of select="gen:identifier(rw:Class)"/><xsl:text> </xsl:text>
       <xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text>;&#10;</xsl:text>
     </xsl:for-each>
@@ -183,6 +192,7 @@
     <xsl:value-of select="gen:comment(rw:Name)"/><xsl:text> at bus address </xsl:text><xsl:value-of select="xs:integer(rw:NodeNumber)"/>
     <xsl:if test="rw:Details"><xsl:text>: </xsl:text><xsl:value-of select="gen:comment(rw:Details)"/></xsl:if>
     <xsl:text>.</xsl:text>
+    <xsl:call-template name="page"/>
   </xsl:template>
 
   <xsl:template match="rw:X10Module" mode="module-summary">
@@ -190,6 +200,17 @@
     <xsl:value-of select="index-of($units, string(rw:UnitCode))"/>
     <xsl:if test="rw:Details"><xsl:text>: </xsl:text><xsl:value-of select="gen:comment(rw:Details)"/></xsl:if>
     <xsl:text>.</xsl:text>
+    <xsl:call-template name="page"/>
+  </xsl:template>
+
+  <!-- where the module's documentation is: a page gathered in the project's docs/, or a URL -->
+  <xsl:template name="page">
+    <xsl:if test="@gen:page">
+      <xsl:text>&#10;     * Documentation: </xsl:text>
+      <xsl:value-of select="gen:comment(@gen:page)"/>
+      <xsl:if test="not(contains(@gen:page, '://'))"><xsl:text> in this project (index: docs/index.md)</xsl:text></xsl:if>
+      <xsl:text>.</xsl:text>
+    </xsl:if>
   </xsl:template>
 
   <xsl:template name="other-participant-fields">
@@ -224,13 +245,13 @@
       <xsl:variable name="bus-class" select="gen:qualified(if (contains(rw:TalkToBusClass, '.')) then rw:TalkToBusClass
           else 'robotworld.bus.' || rw:TalkToBusClass)"/>
       <xsl:variable name="bus-port" select="(rw:BusPort, rw:COMPort[parent::rw:RobotDescription])[1]"/>
-      <xsl:text>        </xsl:text><xsl:value-of select="$bus-class"/><xsl:text> bus = runtime.own(new </xsl:text>
-      <xsl:value-of select="$bus-class"/><xsl:text>(runtime.port(NAME, "bus", </xsl:text>
-      <xsl:value-of select="if ($bus-port) then gen:java-string($bus-port) else 'null'"/><xsl:text>)));&#10;</xsl:text>
+      <xsl:text>        </xsl:text><xsl:value-of select="$bus-class"/><xsl:text> bus = runtime.own(ParticipantMain.open(NAME, "bus", </xsl:text>
+      <xsl:value-of select="if ($bus-port) then gen:java-string($bus-port) else 'null'"/><xsl:text>,&#10;                </xsl:text>
+      <xsl:value-of select="$bus-class"/><xsl:text>::new));&#10;</xsl:text>
     </xsl:if>
     <xsl:if test="rw:X10Module">
-      <xsl:text>        robotworld.x10.CM11aController x10 = runtime.own(robotworld.x10.CM11aController.open(</xsl:text>
-      <xsl:text>runtime.port(NAME, "x10", </xsl:text><xsl:value-of select="gen:java-string(rw:COMPort)"/><xsl:text>)));&#10;</xsl:text>
+      <xsl:text>        robotworld.x10.CM11aController x10 = runtime.own(ParticipantMain.open(NAME, "x10", </xsl:text>
+      <xsl:value-of select="gen:java-string(rw:COMPort)"/><xsl:text>,&#10;                robotworld.x10.CM11aController::open));&#10;</xsl:text>
     </xsl:if>
     <xsl:for-each select="gen:modules(.)">
       <xsl:apply-templates select="rw:Safety"><xsl:with-param name="target" select="'runtime.safety()'"/></xsl:apply-templates>
@@ -271,29 +292,43 @@
 
   <xsl:template name="main-and-control">
     <xsl:variable name="all" select="gen:modules($participants)"/>
-    <xsl:text>&#10;    /**&#10;     * Connects to the space, starts this participant, runs the control program, then serves until stopped.&#10;</xsl:text>
-    <xsl:text>     * However the program ends (return, exception, Ctrl-C, SIGTERM, System.exit), the runtime first puts the&#10;</xsl:text>
-    <xsl:text>     * actuators of this computer into their safe state (see docs/safety.md).&#10;     */&#10;</xsl:text>
-    <xsl:text>    public static void main(String[] args) throws Exception {&#10;</xsl:text>
-    <xsl:text>        try (XVSMRuntime runtime = XVSMRuntime.connect(SPACE_URL, HOST)) {&#10;</xsl:text>
-    <xsl:text>            try {&#10;</xsl:text>
-    <xsl:text>                </xsl:text><xsl:value-of select="gen:identifier($class-name)"/><xsl:text> program = new </xsl:text>
-    <xsl:value-of select="gen:identifier($class-name)"/><xsl:text>(runtime);&#10;</xsl:text>
-    <xsl:text>                program.control();&#10;</xsl:text>
-    <xsl:text>                runtime.serveUntilStopped();&#10;</xsl:text>
-    <xsl:text>            } catch (Throwable failure) {&#10;</xsl:text>
-    <xsl:text>                runtime.failed(failure);&#10;</xsl:text>
-    <xsl:text>                throw failure;&#10;</xsl:text>
-    <xsl:text>            }&#10;        }&#10;    }&#10;</xsl:text>
+    <xsl:variable name="serves" select="$participant != 'external' and exists(gen:modules($self))"/>
+    <xsl:text>&#10;    /**&#10;     * Connects to the space, </xsl:text>
+    <xsl:if test="$serves"><xsl:text>opens this computer's hardware, </xsl:text></xsl:if>
+    <xsl:text>and runs {@link #control()}. When control() returns, the&#10;</xsl:text>
+    <xsl:text>     * runtime closes and the program ends; a failure ends it with a short report that names the fix&#10;</xsl:text>
+    <xsl:text>     * (-Drwe.debug=true adds the stack trace). However the program ends (return, exception, Ctrl-C, SIGTERM,&#10;</xsl:text>
+    <xsl:text>     * System.exit), the runtime first puts the actuators of this computer into their safe state (see&#10;</xsl:text>
+    <xsl:text>     * docs/safety.md).&#10;     */&#10;</xsl:text>
+    <xsl:text>    public static void main(String[] args) {&#10;</xsl:text>
+    <xsl:text>        ParticipantMain.run(NAME, () -> {&#10;</xsl:text>
+    <xsl:text>            try (XVSMRuntime runtime = XVSMRuntime.connect(SPACE_URL, HOST)) {&#10;</xsl:text>
+    <xsl:text>                try {&#10;</xsl:text>
+    <xsl:text>                    new </xsl:text><xsl:value-of select="gen:identifier($class-name)"/><xsl:text>(runtime).control();&#10;</xsl:text>
+    <xsl:text>                } catch (Throwable failure) {&#10;</xsl:text>
+    <xsl:text>                    runtime.failed(failure);&#10;</xsl:text>
+    <xsl:text>                    throw failure;&#10;</xsl:text>
+    <xsl:text>                }&#10;            }&#10;        });&#10;    }&#10;</xsl:text>
     <xsl:text>&#10;    /**&#10;     * The control program. Every module of the world is a field of this class:&#10;</xsl:text>
     <xsl:for-each select="$all">
       <xsl:text>     * </xsl:text><xsl:value-of select="gen:identifier(@gen:field)"/><xsl:text> (</xsl:text>
       <xsl:value-of select="gen:comment(gen:name(..))"/><xsl:text>, </xsl:text><xsl:value-of select="gen:comment(rw:Name)"/>
       <xsl:text>)&#10;</xsl:text>
     </xsl:for-each>
-    <xsl:text>     * When it returns, this computer keeps serving its modules until the program is stopped.&#10;     */&#10;</xsl:text>
-    <xsl:text>    public void control() throws Exception {&#10;</xsl:text>
+    <xsl:text>     * Replace the lines between the markers with your program; when it returns, the program ends.&#10;</xsl:text>
+    <xsl:choose>
+      <xsl:when test="$serves">
+        <xsl:text>     * As generated, it serves this computer's modules to the rest of the world until stopped (Ctrl-C).&#10;</xsl:text>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:text>     * As generated, it does nothing, so the program ends at once.&#10;</xsl:text>
+      </xsl:otherwise>
+    </xsl:choose>
+    <xsl:text>     */&#10;    public void control() throws Exception {&#10;</xsl:text>
     <xsl:text>        // >>> control logic begins here&#10;</xsl:text>
+    <xsl:if test="$serves">
+      <xsl:text>        runtime.serveUntilStopped();&#10;</xsl:text>
+    </xsl:if>
     <xsl:text>        // &lt;&lt;&lt; control logic ends here&#10;</xsl:text>
     <xsl:text>    }&#10;</xsl:text>
   </xsl:template>

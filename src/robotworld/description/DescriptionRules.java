@@ -313,16 +313,22 @@ final class DescriptionRules {
     private boolean unique(Map<String, XmlObject> seen, String value, XmlObject at, String what, String where) {
         XmlObject earlier = seen.putIfAbsent(value, at);
         if (earlier != null) {
-            int line = SourcePositions.of(earlier)[0];
-            error(at, "duplicate " + what + " '" + value + "' in " + where
-                    + (line > 0 ? " (first used at line " + line + ")" : ""));
+            error(at, "duplicate " + what + " '" + value + "' in " + where + firstUsed(earlier, at));
             return false;
         }
         return true;
     }
 
+    /** " (first used at line 8)", or " (first used in robot.xml at line 2)" when that is another file. */
+    private String firstUsed(XmlObject earlier, XmlObject at) {
+        int line = SourcePositions.of(earlier)[0];
+        String earlierFile = SourcePositions.sourceOf(earlier, source);
+        String where = earlierFile.equals(SourcePositions.sourceOf(at, source)) ? "" : " in " + earlierFile;
+        return line > 0 ? " (first used" + where + " at line " + line + ")" : where.isEmpty() ? "" : " (first used" + where + ")";
+    }
+
     private void error(XmlObject at, String message) {
         int[] position = SourcePositions.of(at);
-        errors.add(new DescriptionError(source, position[0], position[1], message));
+        errors.add(new DescriptionError(SourcePositions.sourceOf(at, source), position[0], position[1], message));
     }
 }

@@ -32,6 +32,7 @@ public final class RobotWorldAssembler {
     private String packageName;
     private String spaceUrl;
     private final List<Path> environments = new ArrayList<>();
+    private final List<EnvironmentDocument> builtEnvironments = new ArrayList<>();
     private final List<Path> robots = new ArrayList<>();
 
     public RobotWorldAssembler(String worldName) {
@@ -59,26 +60,39 @@ public final class RobotWorldAssembler {
         return this;
     }
 
+    /** Adds an environment built in memory, e.g. by {@link EnvironmentBuilder}. */
+    public RobotWorldAssembler addEnvironment(EnvironmentDocument environment) {
+        builtEnvironments.add(Objects.requireNonNull(environment, "environment"));
+        return this;
+    }
+
     public RobotWorldAssembler addRobot(Path robotFile) {
         robots.add(Objects.requireNonNull(robotFile, "robotFile"));
         return this;
     }
 
-    /** Loads every part and returns the validated world. Errors of all parts are reported together. */
+    /**
+     * Loads every part and returns the validated world. Errors of all parts are reported together; an error of the
+     * world as a whole (a participant name used twice) is reported at its place in the part's file.
+     */
     public RobotWorldDocument assemble() throws DescriptionException {
         List<DescriptionError> errors = new ArrayList<>();
-        List<EnvModuleListType> loadedEnvironments = new ArrayList<>();
-        List<ModuleListType> loadedRobots = new ArrayList<>();
+        List<Part<EnvModuleListType>> loadedEnvironments = new ArrayList<>();
+        List<Part<ModuleListType>> loadedRobots = new ArrayList<>();
         for (Path file : environments) {
             try {
-                loadedEnvironments.add(DescriptionLoader.loadEnvironment(file).getEnvironment());
+                loadedEnvironments.add(new Part<>(DescriptionLoader.loadEnvironment(file).getEnvironment(),
+                        file.toString()));
             } catch (DescriptionException e) {
                 errors.addAll(e.errors());
             }
         }
+        for (EnvironmentDocument built : builtEnvironments) {
+            loadedEnvironments.add(new Part<>(built.getEnvironment(), null));
+        }
         for (Path file : robots) {
             try {
-                loadedRobots.add(DescriptionLoader.loadRobot(file).getRobotDescription());
+                loadedRobots.add(new Part<>(DescriptionLoader.loadRobot(file).getRobotDescription(), file.toString()));
             } catch (DescriptionException e) {
                 errors.addAll(e.errors());
             }
@@ -104,14 +118,22 @@ public final class RobotWorldAssembler {
         if (spaceUrl != null) {
             world.setSpaceURL(spaceUrl);
         }
-        for (EnvModuleListType environment : loadedEnvironments) {
-            world.addNewEnvironment().set(environment);
+        for (Part<EnvModuleListType> environment : loadedEnvironments) {
+            EnvModuleListType copy = world.addNewEnvironment();
+            copy.set(environment.element());
+            SourcePositions.copy(environment.element(), copy, environment.source());
         }
-        for (ModuleListType robot : loadedRobots) {
-            world.addNewRobotDescription().set(robot);
+        for (Part<ModuleListType> robot : loadedRobots) {
+            ModuleListType copy = world.addNewRobotDescription();
+            copy.set(robot.element());
+            SourcePositions.copy(robot.element(), copy, robot.source());
         }
         DescriptionLoader.validate(document, "assembled world '" + worldName + "'");
         return document;
+    }
+
+    /** A loaded part and the file it came from (null when it was built in memory). */
+    private record Part<T extends org.apache.xmlbeans.XmlObject>(T element, String source) {
     }
 
     /** Writes a description as indented XML, atomically: a reader never sees a half-written file. */

@@ -28,8 +28,9 @@ import robotworld.explorer.generator.TransferStylesheets;
 
 /**
  * Turns a RobotWorld and a viewpoint into a ready project: an Ant {@code build.xml}, one Java class per
- * participant under {@code src/<package>/}, the framework jars under {@code lib/}, and Eclipse {@code .project}
- * and {@code .classpath}.
+ * participant under {@code src/<package>/}, the framework jars under {@code lib/} (with the runtime's sources and
+ * javadoc), the module pages the descriptions name under {@code docs/} with an index, and Eclipse
+ * {@code .project} and {@code .classpath} (sources and javadoc attached).
  *
  * <p>The work is done by the stylesheets of the world's communication type,
  * {@code transfer/<type>/build.xslt} and {@code source.xslt}, found on the class path. Generation is atomic:
@@ -96,7 +97,8 @@ public final class FrameworkGenerator {
         PreparedWorld prepared = PreparedWorld.of(world, viewpoint, packageName);
         List<Path> jars = FrameworkLibraries.in(frameworkDirectory);
         Map<String, String> classes = prepared.classes();
-        int total = classes.size() + jars.size() + 3;
+        Map<String, Path> pages = prepared.pageCopies();
+        int total = classes.size() + jars.size() + 4;
         int done = 0;
         XdmNode input = toXdm(prepared.document());
         String type = prepared.communicationType();
@@ -116,9 +118,15 @@ public final class FrameworkGenerator {
                 listener.step(++done, total, "copying " + jar.getFileName());
                 project.copy(jar, "lib/" + jar.getFileName());
             }
+            listener.step(++done, total, "gathering the module pages in docs/");
+            for (Map.Entry<String, Path> page : pages.entrySet()) {
+                project.copy(page.getValue(), page.getKey());
+            }
+            project.writeText("docs/index.md", prepared.pageIndex());
             listener.step(++done, total, "writing Eclipse .project and .classpath");
-            project.writeText(".project", EclipseProject.projectFile(destination.getFileName().toString()));
-            project.writeText(".classpath", EclipseProject.classpathFile(
+            String projectName = destination.toAbsolutePath().normalize().getFileName().toString();
+            project.writeText(".project", EclipseProject.projectFile(projectName));
+            project.writeText(".classpath", EclipseProject.classpathFile(projectName,
                     jars.stream().map(jar -> jar.getFileName().toString()).toList()));
             listener.step(total, total, "moving the project into " + destination);
             List<Path> files = project.commit();

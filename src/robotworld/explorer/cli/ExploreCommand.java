@@ -6,7 +6,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.concurrent.Callable;
-import java.util.regex.Pattern;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -24,20 +23,20 @@ import robotworld.bus.explore.ExplorationResult;
 import robotworld.bus.explore.FoundModule;
 import robotworld.bus.explore.ModuleCatalog;
 import robotworld.bus.explore.RobotExplorer;
-import robotworld.core.HostNames;
 import robotworld.description.DescriptionError;
 import robotworld.description.DescriptionException;
 import robotworld.description.RobotWorldAssembler;
+import robotworld.explorer.WorldAssembly;
+import robotworld.program.PortException;
 
 /** {@code rwe explore --port P --name N --out FILE}: scans a robot's bus and writes its robot description. */
 @Command(name = "explore", mixinStandardHelpOptions = true,
         description = {"Explore a robot's module bus (Modbus RTU, addresses 1..247) and write its robot description.",
                 "Each module that answers is identified, checked (status, echo) and looked up by its NodeID in the "
                         + "module descriptions. Problems at an address are listed and the address is skipped.",
-                "Exit code 0 when a description was written, 1 when no module was found or the port failed."})
+                "Exit code 0 when a description was written, 1 when no module was found or the port failed.",
+                "Then: rwe assemble --robot FILE ... --name WORLD --out WORLD.xml."})
 final class ExploreCommand implements Callable<Integer> {
-
-    private static final Pattern HOST = Pattern.compile("[A-Za-z0-9]([A-Za-z0-9.\\-]*[A-Za-z0-9])?");
 
     @Option(names = "--port", required = true, paramLabel = "PORT",
             description = "the bus: a serial device (/dev/ttyUSB0, COM4) or tcp://HOST:PORT")
@@ -48,6 +47,9 @@ final class ExploreCommand implements Callable<Integer> {
 
     @Option(names = "--out", required = true, paramLabel = "FILE", description = "where to write the robot description")
     private Path out;
+
+    @Option(names = "--force", description = "replace FILE if it exists")
+    private boolean force;
 
     @Option(names = "--descriptions", paramLabel = "DIR",
             description = "module descriptions folder (default: ModuleDescriptions/ of the RobotWorldExplorer home)")
@@ -92,7 +94,7 @@ final class ExploreCommand implements Callable<Integer> {
     private CommandSpec spec;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws IOException, PortException {
         PrintWriter stdout = spec.commandLine().getOut();
         PrintWriter stderr = spec.commandLine().getErr();
         boolean autoBaud = baudText.equalsIgnoreCase("auto");
@@ -102,6 +104,14 @@ final class ExploreCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--baud must be a number or auto, not '" + baudText + "'");
         }
         BusTiming timing = timing();
+        String nameProblem = WorldAssembly.problemWithName(name);
+        if (nameProblem != null) {
+            throw new ParameterException(spec.commandLine(), "--name: " + nameProblem);
+        }
+        if (Files.exists(out) && !force) {
+            throw new ParameterException(spec.commandLine(), out + " exists; choose another --out or add --force to"
+                    + " replace it");
+        }
         Path folder = descriptions != null ? descriptions : defaultDescriptions();
         if (!Files.isDirectory(folder)) {
             throw new ParameterException(spec.commandLine(), "module descriptions folder " + folder + " does not exist");
@@ -113,7 +123,9 @@ final class ExploreCommand implements Callable<Integer> {
         try {
             bus = new RS485Bus(port, SerialSettings.eightNoneOne(baud), timing);
         } catch (InvalidPortNameException e) {
-            throw new ParameterException(spec.commandLine(), e.getMessage());
+            throw new ParameterException(spec.commandLine(), "--port: " + e.getMessage());
+        } catch (IOException e) {
+            throw new PortException(null, "bus", port, e);
         }
         try (bus) {
             try {
@@ -124,7 +136,7 @@ final class ExploreCommand implements Callable<Integer> {
             RobotExplorer explorer;
             try {
                 explorer = new RobotExplorer(bus, new ModuleCatalog(folder)).addresses(from, to)
-                        .host(host != null ? host : localHostName());
+                        .host(host != null ? host : WorldAssembly.thisComputer());
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }
@@ -197,6 +209,7 @@ final class ExploreCommand implements Callable<Integer> {
         RobotWorldAssembler.write(result.description().get(), out);
         stdout.println("wrote " + out + ": robot '" + name + "' with " + result.modules().size()
                 + (result.modules().size() == 1 ? " module" : " modules"));
+        stdout.println("next: rwe assemble --robot " + out + " [--x10 A3=appliance:Lamp] --name WORLD --out WORLD.xml");
         return 0;
     }
 
@@ -211,12 +224,6 @@ final class ExploreCommand implements Callable<Integer> {
 
     private static Path defaultDescriptions() {
         return Path.of(System.getProperty("rwe.home", ".")).resolve("ModuleDescriptions");
-    }
-
-    /** This computer's name if it can stand in a description, else localhost. */
-    private static String localHostName() {
-        String local = HostNames.thisComputer();
-        return HOST.matcher(local).matches() && local.length() <= 253 ? local : "localhost";
     }
 
     /** Feeds the progress bar and lists problems as they happen. */

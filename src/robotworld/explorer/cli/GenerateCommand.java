@@ -16,12 +16,13 @@ import robotworld.description.RobotWorldDocument;
 import robotworld.explorer.FrameworkGenerator;
 import robotworld.explorer.generator.GenerationException;
 import robotworld.explorer.generator.GenerationResult;
+import robotworld.explorer.generator.RunInstructions;
 
 /** {@code rwe generate WORLD --viewpoint NAME|external --out DIR}: a ready Ant + Eclipse project. */
 @Command(name = "generate", mixinStandardHelpOptions = true,
         description = {"Generate the control framework of one viewpoint of a RobotWorld: build.xml, one class per",
                 "participant, the framework jars in lib/, and Eclipse project files.",
-                "Build and run the result with plain Ant: ant run (-Drwe.space.url=... to choose the space)."})
+                "Prints the command that builds and runs it with plain Ant (ant run -Drwe.space.url=... -Drwe.port...)."})
 final class GenerateCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "WORLD", description = "the RobotWorld description")
@@ -59,10 +60,18 @@ final class GenerateCommand implements Callable<Integer> {
             err.printf("validating %s%n", world);
             RobotWorldDocument loaded = DescriptionLoader.loadWorld(world, schemas);
             GenerationResult result = new FrameworkGenerator().generate(loaded, viewpoint, packageName, this.out,
-                    force, (done, total, step) -> err.printf("[%d/%d] %s%n", done, total, step));
-            out.printf("generated %s (%d files, %d ms)%n  main class: %s%n  build and run: cd %s && ant run%n",
-                    result.destination(), result.files().size(), result.elapsed().toMillis(), result.mainClass(),
-                    result.destination());
+                    force, (done, total, step) -> {
+                        if (!step.startsWith("copying ") || step.contains("robotworld-runtime")) {
+                            err.printf("[%d/%d] %s%n", done, total, step);
+                        }
+                    });
+            out.printf("generated %s (%d files, %d ms), main class %s%n", result.destination(),
+                    result.files().size(), result.elapsed().toMillis(), result.mainClass());
+            out.println("write your control program in " + result.destination().relativize(result.mainSource())
+                    + ", between the markers of control(); then run it:");
+            out.println("  " + RunInstructions.command(loaded, viewpoint, result.destination()));
+            out.println("(the space and ports are the description's: change them there, e.g."
+                    + " -Drwe.port.NAME.bus=tcp://127.0.0.1:5020 for a simulated robot)");
             return 0;
         } catch (DescriptionException e) {
             e.errors().stream().map(DescriptionError::toString).forEach(err::println);

@@ -10,8 +10,9 @@ import java.nio.file.Path;
  */
 public final class ControlProgram {
 
-    /** The marked place in a generated main class's control() method. */
+    /** The marked place in a generated main class's control() method: the program replaces what is between. */
     public static final String MARKER = "// >>> control logic begins here";
+    public static final String END_MARKER = "// <<< control logic ends here";
 
     /** System property: end of the run, milliseconds since the epoch. */
     public static final String UNTIL_PROPERTY = "rwe.demo.until";
@@ -96,15 +97,19 @@ public final class ControlProgram {
     private ControlProgram() {
     }
 
-    /** Puts the listing at the marked place of {@code mainSource}. */
+    /** Puts the listing between the markers of {@code mainSource}, in place of what the generator wrote there. */
     public static void insert(Path mainSource) throws IOException {
         String source = Files.readString(mainSource);
-        if (!source.contains(MARKER)) {
+        int begin = source.indexOf(MARKER);
+        int end = source.indexOf(END_MARKER);
+        if (begin < 0 || end < begin) {
             throw new IllegalStateException(mainSource + " has no marked place for control logic");
         }
         if (source.contains("DEMO-STATS")) {
             return; // already in (a re-run over the same project)
         }
-        Files.writeString(mainSource, source.replace(MARKER, MARKER + "\n" + LISTING_5_2));
+        int lineEnd = source.indexOf('\n', begin) + 1;
+        int endLine = source.lastIndexOf('\n', end) + 1;
+        Files.writeString(mainSource, source.substring(0, lineEnd) + LISTING_5_2 + source.substring(endLine));
     }
 }

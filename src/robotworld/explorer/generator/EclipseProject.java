@@ -28,18 +28,40 @@ public final class EclipseProject {
                 """.formatted(xmlText(projectName));
     }
 
-    /** The src folder, the JRE, exactly the jars in lib/, and Eclipse's own output folder. */
-    public static String classpathFile(List<String> libraryJars) {
+    /**
+     * The src folder, the JRE, the library jars in lib/ (each with its {@code -sources.jar} and
+     * {@code -javadoc.jar} from lib/ attached, when there), and Eclipse's own output folder.
+     */
+    public static String classpathFile(String projectName, List<String> jars) {
         StringBuilder file = new StringBuilder("""
                 <?xml version="1.0" encoding="UTF-8"?>
                 <classpath>
                   <classpathentry kind="src" path="src"/>
                   <classpathentry kind="con" path="org.eclipse.jdt.launching.JRE_CONTAINER"/>
                 """);
-        for (String jar : libraryJars) {
-            file.append("  <classpathentry kind=\"lib\" path=\"lib/").append(xmlText(jar)).append("\"/>\n");
+        for (String jar : jars) {
+            if (FrameworkLibraries.isAttachment(jar)) {
+                continue;
+            }
+            String base = jar.substring(0, jar.length() - ".jar".length());
+            file.append("  <classpathentry kind=\"lib\" path=\"lib/").append(xmlText(jar)).append('"');
+            if (jars.contains(base + "-sources.jar")) {
+                file.append(" sourcepath=\"lib/").append(xmlText(base)).append("-sources.jar\"");
+            }
+            if (jars.contains(base + "-javadoc.jar")) {
+                file.append(">\n    <attributes>\n      <attribute name=\"javadoc_location\" value=\"jar:platform:/resource/")
+                        .append(xmlText(urlPath(projectName))).append("/lib/").append(xmlText(base))
+                        .append("-javadoc.jar!/\"/>\n    </attributes>\n  </classpathentry>\n");
+            } else {
+                file.append("/>\n");
+            }
         }
         return file.append("  <classpathentry kind=\"output\" path=\"bin\"/>\n</classpath>\n").toString();
+    }
+
+    /** A project name as it stands in a platform URL. */
+    private static String urlPath(String name) {
+        return java.net.URLEncoder.encode(name, java.nio.charset.StandardCharsets.UTF_8).replace("+", "%20");
     }
 
     private static String xmlText(String text) {

@@ -9,7 +9,7 @@ import java.util.stream.Stream;
 
 /**
  * The jars a generated project needs in its {@code lib/}: {@code robotworld-runtime.jar} (module interfaces,
- * space client, XVSM proxies, hardware proxies) and the libraries it runs on. The build puts exactly these into
+ * space client, XVSM proxies, hardware proxies) with its sources and javadoc jars, and the libraries it runs on. The build puts exactly these into
  * {@code build/dist/framework/}; an installed RobotWorldExplorer has them in {@code framework/} beside its jar.
  */
 public final class FrameworkLibraries {
@@ -39,7 +39,17 @@ public final class FrameworkLibraries {
         return Path.of(System.getProperty("rwe.home", ".")).resolve("build/dist/framework");
     }
 
-    /** The jars in {@code directory}, sorted; fails when the runtime jar is not among them. */
+    /** Whether a jar is a sources or javadoc jar: attached to another for the IDE, never on a class path. */
+    public static boolean isAttachment(String jarName) {
+        return jarName.endsWith("-sources.jar") || jarName.endsWith("-javadoc.jar");
+    }
+
+    /** The jars to compile and run against: {@link #in} without the attachments. */
+    public static List<Path> classPath(Path directory) throws GenerationException {
+        return in(directory).stream().filter(jar -> !isAttachment(jar.getFileName().toString())).toList();
+    }
+
+    /** The jars in {@code directory} (attachments included), sorted; fails when the runtime jar is not among them. */
     public static List<Path> in(Path directory) throws GenerationException {
         if (!Files.isRegularFile(directory.resolve(RUNTIME_JAR))) {
             throw new GenerationException("no " + RUNTIME_JAR + " in " + directory.toAbsolutePath()

@@ -13,4 +13,9 @@ import java.util.List;
  * @param elapsed     how long generation took
  */
 public record GenerationResult(Path destination, String mainClass, List<Path> files, Duration elapsed) {
+
+    /** The source file of the main class, where the control program goes. */
+    public Path mainSource() {
+        return destination.resolve("src/" + mainClass.replace('.', '/') + ".java");
+    }
 }

@@ -33,6 +33,7 @@ public final class PreparedWorld {
     private final String packageName;
     /** Participant name to the Java class written for it, in document order. */
     private final Map<String, String> classes = new LinkedHashMap<>();
+    private ModulePages pages;
 
     private PreparedWorld(RobotWorldDocument document, String viewpoint, String packageName) {
         this.document = document;
@@ -59,6 +60,7 @@ public final class PreparedWorld {
         world.setPackageName(packageName);
         insertViewpoint(world, viewpoint);
         nameFields(world);
+        prepared.pages = ModulePages.resolve(world, ModulePages.defaultRoot());
         for (String participant : participants) {
             if (!none || participant.equals(viewpoint)) {
                 prepared.classes.put(participant, participant);
@@ -68,6 +70,16 @@ public final class PreparedWorld {
             prepared.classes.put(EXTERNAL, externalClassName(world.getWorldName(), participants));
         }
         return prepared;
+    }
+
+    /** The module pages the project gathers: project path ({@code docs/modules/...}) to the file to copy. */
+    public Map<String, java.nio.file.Path> pageCopies() {
+        return pages.copies();
+    }
+
+    /** The text of {@code docs/index.md}: every module with its field name and page. */
+    public String pageIndex() {
+        return pages.index(document.getRobotWorld().getWorldName(), viewpoint);
     }
 
     public RobotWorldDocument document() {

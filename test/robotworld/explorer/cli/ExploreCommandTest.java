@@ -95,7 +95,8 @@ class ExploreCommandTest {
     @Test
     void usageErrorsExitTwo() {
         assertEquals(2, rwe("explore", "--port", port, "--name", "X"));
-        assertTrue(err.toString().contains("Missing required option: '--out=FILE'"), err.toString());
+        assertTrue(err.toString().contains("rwe explore: missing option '--out=FILE'\nsee 'rwe explore --help'"),
+                err.toString());
         assertEquals(2, rwe("explore", "--port", "ftp://host:1", "--name", "X", "--out", "x.xml",
                 "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString()));
         assertTrue(err.toString().contains("unsupported port scheme 'ftp'"), err.toString());
@@ -106,14 +107,38 @@ class ExploreCommandTest {
     }
 
     @Test
-    void aBadRobotNameOrAnUnreachablePortFailsWithOneLine() {
-        assertEquals(1, rwe("explore", "--port", port, "--name", "2fast", "--out", folder.resolve("a.xml").toString(),
+    void aBadRobotNameIsAUsageErrorInWords() {
+        assertEquals(2, rwe("explore", "--port", port, "--name", "my robot", "--out", folder.resolve("a.xml").toString(),
                 "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString()));
-        assertTrue(err.toString().contains("'2fast'"), err.toString());
+        assertEquals("rwe explore: --name: names may contain only letters, digits and _, and may not start with a digit;"
+                + " got 'my robot'\nsee 'rwe explore --help'\n", err.toString());
+        err.getBuffer().setLength(0);
+        assertEquals(2, rwe("explore", "--port", port, "--name", "R", "--out", "x.xml", "--from", "t"));
+        assertEquals("rwe explore: --from: 't' is not a number\nsee 'rwe explore --help'\n", err.toString());
+    }
+
+    @Test
+    void anUnreachablePortFailsWithTheFix() {
         robot.close();
         assertEquals(1, rwe("explore", "--port", port, "--name", "Gone", "--out", folder.resolve("b.xml").toString(),
                 "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString()));
-        assertTrue(err.toString().contains("rwe: " + port + ": cannot connect"), err.toString());
+        assertTrue(err.toString().contains("rwe explore: nothing answers at " + port + " (connection refused).\n"
+                + "Start the simulator or serial bridge there"), err.toString());
+        assertTrue(err.toString().contains("or choose the port with --port PORT."), err.toString());
         assertFalse(err.toString().contains("\tat "), err.toString());
+    }
+
+    /** Like generate, explore refuses to overwrite a file unless told to. */
+    @Test
+    void anExistingDescriptionIsKeptWithoutForce() throws Exception {
+        Path file = Files.writeString(folder.resolve("CliBot.xml"), "my edits");
+        assertEquals(2, rwe("explore", "--port", port, "--name", "CliBot", "--out", file.toString(), "--to", "2",
+                "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString()));
+        assertTrue(err.toString().contains(file + " exists; choose another --out or add --force to replace it"),
+                err.toString());
+        assertEquals("my edits", Files.readString(file));
+        assertEquals(0, rwe("explore", "--port", port, "--name", "CliBot", "--out", file.toString(), "--to", "2",
+                "--force", "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString()), err.toString());
+        assertEquals("CliBot", DescriptionLoader.loadRobot(file).getRobotDescription().getRobotName());
     }
 }

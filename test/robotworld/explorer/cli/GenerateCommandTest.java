@@ -30,8 +30,9 @@ class GenerateCommandTest {
         int code = rwe("generate", ProjectFiles.resolve("docs/examples/listing-3-5-world.xml").toString(),
                 "--viewpoint", "MyRobot", "--out", project.toString());
         assertEquals(0, code, err.toString());
-        assertTrue(out.toString().contains("main class: mypackage.MyRobot"), out.toString());
-        assertTrue(out.toString().contains("ant run"), out.toString());
+        assertTrue(out.toString().contains("main class mypackage.MyRobot"), out.toString());
+        assertTrue(out.toString().contains("\n  cd " + project + " && ant run -Drwe.port.MyRobot.bus=/dev/ttyUSB0\n"),
+                "the exact command, ports included: " + out);
         assertTrue(err.toString().contains("] writing MyRobot.java"), "progress is shown: " + err);
         assertTrue(Files.isRegularFile(project.resolve("src/mypackage/MyRobot.java")));
     }
@@ -54,5 +55,7 @@ class GenerateCommandTest {
     void viewpointAndOutAreRequired() {
         assertEquals(2, rwe("generate", "world.xml"));
         assertTrue(err.toString().contains("--viewpoint") || err.toString().contains("--out"), err.toString());
+        assertTrue(err.toString().endsWith("see 'rwe generate --help'\n"), err.toString());
+        assertEquals(2, err.toString().lines().count(), "the message and where the help is, no usage dump: " + err);
     }
 }

@@ -58,7 +58,7 @@ class ValidateCommandTest {
     @Test
     void missingArgumentIsAUsageError() {
         assertEquals(2, rwe("validate"));
-        assertTrue(err.toString().contains("Missing required parameter"), err.toString());
+        assertEquals("rwe validate: missing 'FILE'\nsee 'rwe validate --help'\n", err.toString().replace("\r", ""));
     }
 
     @Test

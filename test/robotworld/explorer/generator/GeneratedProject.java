@@ -15,6 +15,7 @@ import javax.tools.ToolProvider;
 public final class GeneratedProject {
 
     public static final String CONTROL_BEGIN = "// >>> control logic begins here";
+    public static final String CONTROL_END = "// <<< control logic ends here";
 
     private final Path root;
 
@@ -34,7 +35,9 @@ public final class GeneratedProject {
 
     public List<Path> libraries() throws IOException {
         try (Stream<Path> files = Files.list(root.resolve("lib"))) {
-            return files.filter(f -> f.toString().endsWith(".jar")).sorted().collect(Collectors.toList());
+            return files.filter(f -> f.toString().endsWith(".jar"))
+                    .filter(f -> !FrameworkLibraries.isAttachment(f.getFileName().toString()))
+                    .sorted().collect(Collectors.toList());
         }
     }
 
@@ -42,14 +45,19 @@ public final class GeneratedProject {
         return Files.readString(root.resolve(relative));
     }
 
-    /** Puts {@code snippet} at the marked place of the control program in {@code mainSource}. */
+    /** Puts {@code snippet} between the markers of the control program in {@code mainSource}, as a user does. */
     public void insertControlLogic(String mainSource, String snippet) throws IOException {
         Path file = root.resolve(mainSource);
         String source = Files.readString(file);
-        if (!source.contains(CONTROL_BEGIN)) {
+        int begin = source.indexOf(CONTROL_BEGIN);
+        int end = source.indexOf(CONTROL_END);
+        if (begin < 0 || end < begin) {
             throw new IllegalStateException(mainSource + " has no marked place for control logic");
         }
-        Files.writeString(file, source.replace(CONTROL_BEGIN, CONTROL_BEGIN + "\n" + snippet));
+        int lineEnd = source.indexOf('\n', begin) + 1;
+        int endLine = source.lastIndexOf('\n', end) + 1;
+        Files.writeString(file, source.substring(0, lineEnd) + snippet + (snippet.endsWith("\n") ? "" : "\n")
+                + source.substring(endLine));
     }
 
     /** Compiles src/ against lib/ with the JDK's compiler; returns the diagnostics, empty when it compiled. */

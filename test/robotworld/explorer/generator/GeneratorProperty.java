@@ -59,7 +59,7 @@ final class GeneratorProperty implements AutoCloseable {
         this.work = work;
         this.files = javac.getStandardFileManager(null, Locale.ROOT, StandardCharsets.UTF_8);
         List<java.io.File> classPath = new ArrayList<>();
-        for (Path jar : FrameworkLibraries.in(FrameworkLibraries.defaultDirectory())) {
+        for (Path jar : FrameworkLibraries.classPath(FrameworkLibraries.defaultDirectory())) {
             classPath.add(jar.toFile());
         }
         files.setLocation(StandardLocation.CLASS_PATH, classPath);

@@ -31,7 +31,8 @@ class NoneFrameworkTest {
         String source = project.read("src/mypackage/MyRobot.java");
         assertTrue(source.contains("public final MotorModule MotorModule1;"), source);
         assertTrue(source.contains("new robotworld.bus.MotorModuleProxy(bus, 1, \"Motor-Controller\")"), source);
-        assertTrue(source.contains("settings.port(NAME, \"bus\", \"/dev/ttyUSB0\")"), source);
+        assertTrue(source.contains("bus = ParticipantMain.open(NAME, \"bus\", \"/dev/ttyUSB0\", robotworld.bus.RS485Bus::new);"),
+                source);
         assertFalse(source.contains("xvsm") || source.contains("XVSM"), "no space in a 'none' project");
 
         project.insertControlLogic("src/mypackage/MyRobot.java", """
@@ -66,5 +67,57 @@ class NoneFrameworkTest {
             assertTrue(classpath.contains("path=\"lib/" + jar.getFileName() + "\""), jar.toString());
         }
         assertTrue(classpath.contains("<classpathentry kind=\"src\" path=\"src\"/>"), classpath);
+    }
+
+    /** The IDE gets the runtime's sources and javadoc, and the project the module pages its description names. */
+    @Test
+    void sourcesJavadocAndModulePagesComeWithTheProject() throws Exception {
+        GenerationResult result = new FrameworkGenerator().generate(LISTING_3_5, "MyRobot", null,
+                temp.resolve("My Project"), false, GenerationListener.SILENT);
+        GeneratedProject project = new GeneratedProject(result.destination());
+        for (String attachment : List.of("robotworld-runtime-sources.jar", "robotworld-runtime-javadoc.jar")) {
+            assertTrue(Files.size(project.root().resolve("lib/" + attachment)) > 10_000, attachment);
+        }
+        try (var jar = new java.util.jar.JarFile(project.root().resolve("lib/robotworld-runtime-sources.jar").toFile())) {
+            assertTrue(jar.getEntry("robotworld/core/MotorModule.java") != null, "sources of the module interfaces");
+        }
+        try (var jar = new java.util.jar.JarFile(project.root().resolve("lib/robotworld-runtime-javadoc.jar").toFile())) {
+            assertTrue(jar.getEntry("robotworld/core/MotorModule.html") != null, "javadoc of the module interfaces");
+        }
+        String classpath = project.read(".classpath");
+        assertTrue(classpath.contains("<classpathentry kind=\"lib\" path=\"lib/robotworld-runtime.jar\""
+                + " sourcepath=\"lib/robotworld-runtime-sources.jar\">"), classpath);
+        assertTrue(classpath.contains("<attribute name=\"javadoc_location\" value=\"jar:platform:/resource/My%20Project/"
+                + "lib/robotworld-runtime-javadoc.jar!/\"/>"), classpath);
+        assertFalse(classpath.contains("kind=\"lib\" path=\"lib/robotworld-runtime-sources.jar\""),
+                "an attachment is no library");
+        assertTrue(project.read("build.xml").contains("excludes=\"*-sources.jar,*-javadoc.jar\""));
+
+        assertEquals(Files.readString(ProjectFiles.resolve("docs/modules/motor.md")), project.read("docs/modules/motor.md"));
+        String index = project.read("docs/index.md");
+        assertTrue(index.contains("| MotorModule1 | MyRobot | Motor-Controller | MotorModule | bus 1 | [motor.md](modules/motor.md) |"),
+                index);
+        assertTrue(project.read("src/mypackage/MyRobot.java").contains(
+                "     * Documentation: docs/modules/motor.md in this project (index: docs/index.md).\n"));
+    }
+
+    /** A DocRef outside the RobotWorldExplorer documentation is listed, never copied; a URL is linked. */
+    @Test
+    void docRefsCannotFetchOtherFiles() throws Exception {
+        Path secret = Files.writeString(temp.resolve("secret.md"), "TOP SECRET");
+        Path world = Files.writeString(temp.resolve("world.xml"), Files.readString(LISTING_3_5)
+                .replace("<DocRef>docs/modules/motor.md</DocRef>", "<DocRef>../../../../../../.." + secret + "</DocRef>"));
+        GenerationResult result = new FrameworkGenerator().generate(world, "MyRobot", null, temp.resolve("p"), false,
+                GenerationListener.SILENT);
+        GeneratedProject project = new GeneratedProject(result.destination());
+        assertFalse(Files.exists(project.root().resolve("docs/modules/secret.md")));
+        assertTrue(project.read("docs/index.md").contains("not found: ../../"), project.read("docs/index.md"));
+        Path linked = Files.writeString(temp.resolve("linked.xml"), Files.readString(LISTING_3_5)
+                .replace("<DocRef>docs/modules/motor.md</DocRef>", "<DocRef>https://example.org/motor#setMotor</DocRef>"));
+        result = new FrameworkGenerator().generate(linked, "MyRobot", null, temp.resolve("q"), false,
+                GenerationListener.SILENT);
+        project = new GeneratedProject(result.destination());
+        assertTrue(project.read("docs/index.md").contains("<https://example.org/motor#setMotor>"));
+        assertTrue(project.read("src/mypackage/MyRobot.java").contains("Documentation: https://example.org/motor#setMotor."));
     }
 }

@@ -94,7 +94,8 @@ class XvsmFrameworkTest {
                 + "\"Servo-Controller\",\n                new robotworld.bus.ServoModuleProxy(bus, 1, "
                 + "\"Servo-Controller\")));"), robot2);
         assertTrue(robot2.contains("public final MotorModule MotorModule1;"), "MyRobot1's motor, reached remotely");
-        assertTrue(robot2.contains("runtime.port(NAME, \"bus\", \"tcp://robot2:4001\")"), robot2);
+        assertTrue(robot2.contains("robotworld.bus.RS485Bus bus = runtime.own(ParticipantMain.open(NAME, \"bus\", "
+                + "\"tcp://robot2:4001\",\n                robotworld.bus.RS485Bus::new));"), robot2);
         String robot1 = project.read("src/MyWorld/MyRobot1.java");
         assertTrue(robot1.contains("MotorModule1 = runtime.own(new XVSMMotorModuleRemote(runtime, NAME, "
                 + "\"Motor-Controller\"));"), robot1);
@@ -124,7 +125,8 @@ class XvsmFrameworkTest {
         GenerationResult result = new FrameworkGenerator().generate(CHAPTER5, "DimRoom", null, temp.resolve("p"),
                 false, GenerationListener.SILENT);
         String room = new GeneratedProject(result.destination()).read("src/chapter5/DimRoom.java");
-        assertTrue(room.contains("CM11aController.open(runtime.port(NAME, \"x10\", \"/dev/ttyS0\"))"), room);
+        assertTrue(room.contains("runtime.own(ParticipantMain.open(NAME, \"x10\", \"/dev/ttyS0\",\n"
+                + "                robotworld.x10.CM11aController::open));"), room);
         assertTrue(room.contains("new robotworld.x10.X10ApplianceModuleLocal(x10, 'A', 3)"), room);
         assertTrue(room.contains("public static final String SPACE_URL = \"http://localhost:9876/space\";"), room);
     }
