@@ -19,6 +19,7 @@ import javax.swing.JOptionPane;
 import robotworld.description.DescriptionException;
 import robotworld.description.DescriptionLoader;
 import robotworld.description.DescriptionSchemas;
+import robotworld.explorer.frames.AssembleFrame;
 import robotworld.explorer.frames.ExploreFrame;
 import robotworld.explorer.frames.GenerateFrame;
 import robotworld.explorer.frames.MonitorFrame;
@@ -27,10 +28,11 @@ import robotworld.explorer.monitor.MonitoredWorld;
 import robotworld.explorer.stop.StopButton;
 
 /**
- * The RobotWorldExplorer launcher (thesis figure 4.1): a main window with three choices, explore a robot,
- * generate a framework, monitor a world; each opens its own window. Start it with {@code ./antw run}, or
- * {@code rwe} without a verb on a desktop. Below them, always visible, the STOP button stops every actuator of a
- * world: the first click asks which world (a RobotWorld file), later clicks stop the same one at once.
+ * The RobotWorldExplorer launcher (thesis figure 4.1): a main window with the steps from robot to running world,
+ * explore a robot, assemble a world, generate a framework, monitor a world; each opens its own window. Start it
+ * with {@code ./antw run}, or {@code rwe} without a verb on a desktop. Below them, always visible, the STOP button
+ * stops every actuator of a world: the first click asks which world (a RobotWorld file), later clicks stop the same
+ * one at once.
  */
 public final class RobotWorldExplorer extends JFrame {
 
@@ -39,6 +41,7 @@ public final class RobotWorldExplorer extends JFrame {
 
     private final Path home;
     private final JButton explore;
+    private final JButton assemble;
     private final JButton generate;
     private final JButton monitor;
     private final StopButton stop;
@@ -51,10 +54,12 @@ public final class RobotWorldExplorer extends JFrame {
         this.home = home;
         setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
         explore = choice("Explore a robot", 'E', () -> new ExploreFrame(this.home));
+        assemble = choice("Assemble a world", 'A', () -> new AssembleFrame(this.home));
         generate = choice("Generate a framework", 'G', GenerateFrame::new);
         monitor = choice("Monitor a world", 'M', MonitorFrame::new);
-        JPanel buttons = new JPanel(new GridLayout(1, 3, 12, 0));
+        JPanel buttons = new JPanel(new GridLayout(1, 4, 12, 0));
         buttons.add(explore);
+        buttons.add(assemble);
         buttons.add(generate);
         buttons.add(monitor);
         JPanel content = new JPanel(new BorderLayout(0, 10));
@@ -112,6 +117,11 @@ public final class RobotWorldExplorer extends JFrame {
     /** The "Explore a robot" button. */
     public JButton exploreButton() {
         return explore;
+    }
+
+    /** The "Assemble a world" button. */
+    public JButton assembleButton() {
+        return assemble;
     }
 
     /** The "Generate a framework" button. */

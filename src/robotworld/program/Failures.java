@@ -107,8 +107,9 @@ public final class Failures {
         }
         BindException bind = find(failure, BindException.class);
         if (bind != null) {
+            String choose = choosePort(fixes, new PortFailure("tcp", null, null));
             return List.of(who + "the network port is already in use (" + firstLine(bind.getMessage()) + ").",
-                    "Stop the program that uses it, or choose another port.");
+                    "Stop the program that uses it, or choose another port" + with(choose) + ".");
         }
         NoSuchFileException missing = find(failure, NoSuchFileException.class);
         if (missing != null) {

@@ -27,6 +27,7 @@ import robotworld.description.DescriptionSchemas;
 import robotworld.description.RobotWorldDocument;
 import robotworld.explorer.FrameworkGenerator;
 import robotworld.explorer.generator.GenerationResult;
+import robotworld.explorer.generator.RunInstructions;
 import robotworld.explorer.monitor.MonitoredParticipant;
 import robotworld.explorer.monitor.MonitoredWorld;
 
@@ -57,6 +58,7 @@ public final class GenerateFrame extends JFrame {
     private final Status status = new Status("Load a RobotWorld description.");
     private final javax.swing.JLabel viewpointLabel;
     private RobotWorldDocument world;
+    private String generatedViewpoint;
 
     public GenerateFrame() {
         super(TITLE);
@@ -234,7 +236,8 @@ public final class GenerateFrame extends JFrame {
         result.setText("");
         progress.setValue(0);
         status.info("Generating...");
-        new GenerateWorker(this, world, viewpointGroup.getSelection().getActionCommand(),
+        generatedViewpoint = viewpointGroup.getSelection().getActionCommand();
+        new GenerateWorker(this, world, generatedViewpoint,
                 chosenPackage.isEmpty() ? null : chosenPackage, folder, replace.isSelected()).execute();
     }
 
@@ -250,8 +253,9 @@ public final class GenerateFrame extends JFrame {
         progress.setString("done");
         result.setText(generated.destination().toString());
         result.setCaretPosition(0);
-        status.info("Generated " + generated.files().size() + " files in " + generated.elapsed().toMillis()
-                + " ms; main class " + generated.mainClass() + ". Build and run it with: ant run");
+        status.info("Generated " + generated.files().size() + " files; main class " + generated.mainClass()
+                + ". Write your program in control(), then run: " + RunInstructions.command(world, generatedViewpoint,
+                generated.destination()));
     }
 
     void failed(String message) {

@@ -23,6 +23,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robotworld.explorer.RobotWorldExplorer;
+import robotworld.explorer.frames.AssembleFrame;
 import robotworld.explorer.frames.ExploreFrame;
 import robotworld.explorer.frames.GenerateFrame;
 import robotworld.explorer.frames.MonitorFrame;
@@ -30,7 +31,7 @@ import robotworld.sim.robot.SimRobotConfigReader;
 import robotworld.sim.robot.SimulatedRobot;
 import robotworld.testsupport.ProjectFiles;
 
-/** The launcher and its three windows: titles, keyboard access, and a real bus exploration. */
+/** The launcher and its four windows: titles, keyboard access, and a real bus exploration. */
 class LauncherAndExploreTest {
 
     private static final String ROBOT = """
@@ -64,19 +65,21 @@ class LauncherAndExploreTest {
     void theLauncherOpensEachWindowAndEverythingHasAKey() {
         RobotWorldExplorer launcher = show(() -> new RobotWorldExplorer(ProjectFiles.root()));
         assertEquals("RobotWorldExplorer", launcher.getTitle());
-        assertEquals(List.of('E', 'G', 'M'), onEdt(() -> List.of((char) launcher.exploreButton().getMnemonic(),
-                (char) launcher.generateButton().getMnemonic(), (char) launcher.monitorButton().getMnemonic())));
+        assertEquals(List.of('E', 'A', 'G', 'M'), onEdt(() -> List.of((char) launcher.exploreButton().getMnemonic(),
+                (char) launcher.assembleButton().getMnemonic(), (char) launcher.generateButton().getMnemonic(),
+                (char) launcher.monitorButton().getMnemonic())));
         screenshot(launcher, "launcher");
 
         onEdt(() -> {
             launcher.exploreButton().doClick();
+            launcher.assembleButton().doClick();
             launcher.generateButton().doClick();
             launcher.monitorButton().doClick();
         });
         List<String> titles = onEdt(() -> Arrays.stream(Frame.getFrames()).filter(Frame::isVisible)
                 .map(Frame::getTitle).toList());
-        assertTrue(titles.containsAll(List.of(ExploreFrame.TITLE, GenerateFrame.TITLE, MonitorFrame.TITLE)),
-                titles.toString());
+        assertTrue(titles.containsAll(List.of(ExploreFrame.TITLE, AssembleFrame.TITLE, GenerateFrame.TITLE,
+                MonitorFrame.TITLE)), titles.toString());
         for (Frame frame : onEdt(Frame::getFrames)) {
             if (frame.isVisible()) {
                 assertEveryControlHasAKey((JFrame) frame);
