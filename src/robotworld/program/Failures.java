@@ -7,7 +7,9 @@ import java.net.SocketTimeoutException;
 import java.net.URI;
 import java.net.UnknownHostException;
 import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -155,24 +157,49 @@ public final class Failures {
         if (find(cause, UnknownHostException.class) != null) {
             return List.of(who + "unknown host in " + port + ".", "Check the host name" + orChoose(choose) + ".");
         }
+        if (message.contains("no such serial port") || SERIAL_ERROR.matcher(message).find()) {
+            return serialPort(who, port, message, device, choose);
+        }
+        return List.of(who + "cannot open " + port + ": " + firstLine(message),
+                "Check " + device + " and its cable" + orChoose(choose) + ".");
+    }
+
+    /**
+     * A serial device that did not open. What the device file says is surer than jSerialComm's error number: no
+     * file, a file we may not use, or one that is there and ours to use, so held by another program.
+     */
+    private static List<String> serialPort(String who, String port, String message, String device, String choose) {
+        Path file = devicePath(port);
         Matcher serial = SERIAL_ERROR.matcher(message);
         int errno = serial.find() ? Integer.parseInt(serial.group(1)) : -1;
-        if (message.contains("no such serial port") || errno == 2 || errno == 6 || errno == 19) {
+        boolean missing = file != null ? !Files.exists(file) : message.contains("no such serial port") || errno == 2;
+        boolean forbidden = file != null ? !missing && (!Files.isReadable(file) || !Files.isWritable(file))
+                : errno == 13 || errno == 1;
+        if (missing) {
             return List.of(who + "there is no serial port " + port + " on this computer.",
                     "Plug in " + device + " and check its name (ls /dev/serial/by-id/)" + orChoose(choose)
                             + " (tcp://HOST:PORT for a simulator or serial bridge).");
         }
-        if (errno == 13 || errno == 1) {
+        if (forbidden) {
             return List.of(who + "not allowed to open " + port + ".",
                     "Add yourself to the group that owns it and log in again: sudo usermod -aG dialout $USER"
                             + " (see docs/hardware.md).");
         }
-        if (errno == 16 || errno == 11) {
-            return List.of(who + port + " is in use by another program.",
-                    "Stop that program (another copy of this one?)" + orChoose(choose) + ".");
+        return List.of(who + port + " is in use by another program.",
+                "Stop that program (another copy of this one? a terminal program, ModemManager?)" + orChoose(choose)
+                        + ".");
+    }
+
+    /** The device file of a serial port name on this computer, or null where names are not files (COM4). */
+    private static Path devicePath(String port) {
+        if (port == null || port.contains("://") || System.getProperty("os.name", "").startsWith("Windows")) {
+            return null;
         }
-        return List.of(who + "cannot open " + port + ": " + firstLine(message),
-                "Check " + device + " and its cable" + orChoose(choose) + ".");
+        try {
+            return port.startsWith("/") ? Path.of(port) : Path.of("/dev", port);
+        } catch (java.nio.file.InvalidPathException e) {
+            return null;
+        }
     }
 
     private static String choosePort(Fixes fixes, PortFailure failure) {

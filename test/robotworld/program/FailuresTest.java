@@ -40,18 +40,25 @@ class FailuresTest {
 
     @Test
     void missingSerialPortNamesThePortProperty() {
-        List<String> lines = lines(port("bus", "/dev/ttyUSB0",
-                new IOException("/dev/ttyUSB0: cannot open serial port (error 2 at 356)")));
-        assertEquals("CaterpillarRobot: there is no serial port /dev/ttyUSB0 on this computer.", lines.get(0));
+        List<String> lines = lines(port("bus", "/dev/ttyRWE-absent",
+                new IOException("/dev/ttyRWE-absent: cannot open serial port (error 2 at 356)")));
+        assertEquals("CaterpillarRobot: there is no serial port /dev/ttyRWE-absent on this computer.", lines.get(0));
         assertTrue(lines.get(1).contains("-Drwe.port.CaterpillarRobot.bus=PORT"), lines.toString());
     }
 
+    /** Whether a device that did not open is missing, forbidden or busy is told by its file, not an error number. */
     @Test
-    void busyAndForbiddenPortsSayWhy() {
-        assertTrue(lines(port("x10", "/dev/ttyS0", new IOException("/dev/ttyS0: cannot open serial port (error 16 at 1)")))
-                .get(0).contains("/dev/ttyS0 is in use by another program"));
-        assertTrue(lines(port("bus", "/dev/ttyUSB0", new IOException("/dev/ttyUSB0: cannot open serial port (error 13"
-                + " at 1)"))).get(1).contains("dialout"));
+    void busyAndForbiddenPortsSayWhy(@org.junit.jupiter.api.io.TempDir java.nio.file.Path temp) throws Exception {
+        String device = java.nio.file.Files.createFile(temp.resolve("ttyFAKE0")).toString();
+        assertEquals("CaterpillarRobot: " + device + " is in use by another program.", lines(port("x10", device,
+                new IOException(device + ": cannot open serial port (error 2 at 510)"))).get(0));
+        assertTrue(lines(port("bus", temp.resolve("ttyGONE").toString(), new IOException("cannot open serial port"
+                + " (error 2 at 510)"))).get(0).contains("there is no serial port"));
+        if (!"root".equals(System.getProperty("user.name"))) { // root may open anything
+            java.nio.file.Files.setPosixFilePermissions(temp.resolve("ttyFAKE0"), java.util.Set.of());
+            assertTrue(lines(port("bus", device, new IOException(device + ": cannot open serial port (error 13 at 1)")))
+                    .get(1).contains("dialout"));
+        }
         assertTrue(lines(port("bus", "tcp://x", new InvalidPortNameException("'tcp://x' has no port"))).get(1)
                 .contains("tcp://HOST:PORT with -Drwe.port.CaterpillarRobot.bus=PORT"));
     }
