@@ -62,6 +62,8 @@ final class Walkthrough implements AutoCloseable {
     private final Map<String, String> ports = new LinkedHashMap<>();
     private final List<Process> background = new ArrayList<>();
     private final List<Path> logs = new ArrayList<>();
+    private final List<String> backgroundCommands = new ArrayList<>();
+    private boolean freshClone;
     private int commandNumber;
 
     /** A walkthrough in {@code folder}, replacing each of {@code fixedPorts} by a free port. */
@@ -113,6 +115,21 @@ final class Walkthrough implements AutoCloseable {
         }
     }
 
+    /** The folder is a clone of its own: ./rwe decides itself whether to build, as for a reader. */
+    void freshClone() {
+        freshClone = true;
+    }
+
+    /** The output so far of the first background command containing {@code part}. */
+    String backgroundOutput(String part) throws IOException {
+        for (int i = 0; i < backgroundCommands.size(); i++) {
+            if (backgroundCommands.get(i).contains(part)) {
+                return Files.readString(logs.get(i), StandardCharsets.UTF_8);
+            }
+        }
+        throw new AssertionError("no background command with '" + part + "'");
+    }
+
     /** {@code text} with the guide's fixed ports replaced. */
     String withPorts(String text) {
         String result = text;
@@ -148,6 +165,7 @@ final class Walkthrough implements AutoCloseable {
         Process process = start(line, log);
         background.add(process);
         logs.add(log);
+        backgroundCommands.add(line);
         long deadline = System.nanoTime() + Duration.ofSeconds(180).toNanos();
         while (!Files.readString(log, StandardCharsets.UTF_8).contains("Ctrl-C")) {
             if (!process.isAlive()) {
@@ -168,7 +186,9 @@ final class Walkthrough implements AutoCloseable {
         environment.put("PATH", ant() + File.pathSeparator + Path.of(System.getProperty("java.home"), "bin")
                 + File.pathSeparator + environment.getOrDefault("PATH", "/usr/bin:/bin"));
         environment.put("JAVA_HOME", System.getProperty("java.home"));
-        environment.put("RWE_NO_BUILD", "1"); // ./antw test built it; never a second build beside this one
+        if (!freshClone) {
+            environment.put("RWE_NO_BUILD", "1"); // ./antw test built it; never a second build beside this one
+        }
         return builder.start();
     }
 

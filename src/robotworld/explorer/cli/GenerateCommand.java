@@ -1,6 +1,9 @@
 package robotworld.explorer.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -14,6 +17,7 @@ import robotworld.description.DescriptionLoader;
 import robotworld.description.DescriptionSchemas;
 import robotworld.description.RobotWorldDocument;
 import robotworld.explorer.FrameworkGenerator;
+import robotworld.explorer.generator.ControlRegion;
 import robotworld.explorer.generator.GenerationException;
 import robotworld.explorer.generator.GenerationResult;
 import robotworld.explorer.generator.RunInstructions;
@@ -43,6 +47,11 @@ final class GenerateCommand implements Callable<Integer> {
     @Option(names = "--force", description = "replace DIR if it exists and is not empty")
     private boolean force;
 
+    @Option(names = "--control", paramLabel = "FILE",
+            description = "put the Java statements in FILE between the markers of the main class's control() method"
+                    + " (a control program kept apart from the generated code)")
+    private Path controlFile;
+
     @Option(names = "--schemas", paramLabel = "DIR",
             description = "validate against the schemas in DIR (e.g. with added module types) instead of the built-in ones")
     private Path schemaDirectory;
@@ -51,10 +60,12 @@ final class GenerateCommand implements Callable<Integer> {
     private CommandSpec spec;
 
     @Override
-    public Integer call() {
+    public Integer call() throws IOException {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try {
+            // read before anything is written: a missing file leaves no half-made project
+            String controlProgram = controlFile == null ? null : Files.readString(controlFile, StandardCharsets.UTF_8);
             DescriptionSchemas schemas = schemaDirectory == null ? DescriptionSchemas.configured()
                     : DescriptionSchemas.fromDirectory(schemaDirectory);
             err.printf("validating %s%n", world);
@@ -67,8 +78,14 @@ final class GenerateCommand implements Callable<Integer> {
                     });
             out.printf("generated %s (%d files, %d ms), main class %s%n", result.destination(),
                     result.files().size(), result.elapsed().toMillis(), result.mainClass());
-            out.println("write your control program in " + result.destination().relativize(result.mainSource())
-                    + ", between the markers of control(); then run it:");
+            if (controlProgram != null) {
+                ControlRegion.replace(result.mainSource(), controlProgram);
+                out.println("put the control program of " + controlFile + " into "
+                        + result.destination().relativize(result.mainSource()) + "; run it:");
+            } else {
+                out.println("write your control program in " + result.destination().relativize(result.mainSource())
+                        + ", between the markers of control(); then run it:");
+            }
             out.println("  " + RunInstructions.command(loaded, viewpoint, result.destination()));
             out.println("(the space and ports are the description's: change them there, e.g."
                     + " -Drwe.port.NAME.bus=tcp://127.0.0.1:5020 for a simulated robot)");
