@@ -44,6 +44,10 @@ import robotworld.space.remote.RemoteSpace;
  * {@code rwe.publish.local} (default true), adaptive sensor batching {@code rwe.sensor.batching} (default false);
  * each also as an environment variable ({@code RWE_CALL_TIMEOUT_MS}, ...).
  *
+ * <p><b>Safety</b> ({@link #safety()}, package {@code robotworld.safety}): the actuators this program serves are put
+ * into their safe state when it ends ({@link #close()}, {@link #failed}, a JVM shutdown), when a remote commander of
+ * theirs goes silent, when the space is lost, and on a stop request; the program sends a heartbeat into the space.
+ *
  * <p>Thread-safe.
  */
 public final class XVSMRuntime implements AutoCloseable {

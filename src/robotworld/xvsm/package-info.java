@@ -6,6 +6,8 @@
  * hardware (a thread per module), and {@code XVSM<C>Remote} calls it from any other computer; both implement
  * {@code C}, so a control program does not see where a module is. They share
  * {@link robotworld.xvsm.XVSMModule} (names and containers), and the request/answer machinery of
- * {@link robotworld.xvsm.XVSMLocalModule} and {@link robotworld.xvsm.XVSMRemoteModule}. See {@code docs/runtime.md}.
+ * {@link robotworld.xvsm.XVSMLocalModule} and {@link robotworld.xvsm.XVSMRemoteModule}. The Local proxies of actuators
+ * are guarded by the program's safety layer ({@code robotworld.safety}): a refused command surfaces as
+ * {@link robotworld.xvsm.ActuatorStoppedException}. See {@code docs/runtime.md} and {@code docs/safety.md}.
  */
 package robotworld.xvsm;

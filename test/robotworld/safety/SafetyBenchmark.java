@@ -306,6 +306,9 @@ public final class SafetyBenchmark {
         System.out.println("Module-call latency with heartbeats (100 ms) and without (rwe.heartbeat.ms=0): "
                 + WARMUP_SECONDS + " s warm-up, then " + CALL_RUNS + " pairs of runs of " + CALLS
                 + " calls each, new programs per run; p50 in µs, and the median of the per-pair ratios:");
+        // about latency, not stops: no watchdog or command timeout a busy machine could reach
+        System.setProperty("rwe.watchdog.ms.SafetyBot.Motor", "10000");
+        System.setProperty("rwe.command.timeout.ms", "60000");
         long warmUntil = System.nanoTime() + Duration.ofSeconds(WARMUP_SECONDS).toNanos();
         boolean heartbeats = true;
         while (System.nanoTime() - warmUntil < 0) {
@@ -327,6 +330,8 @@ public final class SafetyBenchmark {
             }
         }
         System.clearProperty("rwe.heartbeat.ms");
+        System.clearProperty("rwe.watchdog.ms.SafetyBot.Motor");
+        System.clearProperty("rwe.command.timeout.ms");
         report("remote getAllBumper", bumperOn, bumperOff);
         report("remote setMotor (engaged)", motorOn, motorOff);
         System.out.println();

@@ -23,6 +23,11 @@ final class ModuleWatchdog {
         lastFrameNanos = nanos;
     }
 
+    /** The simulator did not run for {@code nanos}: that pause is not silence of the master. */
+    void stalled(long nanos) {
+        lastFrameNanos += nanos;
+    }
+
     /** Whether the timeout has run out now; trips (once per silence) and returns true when it just did. */
     boolean expires(long nanos) {
         if (timeoutMillis == 0 || tripped || nanos - lastFrameNanos < timeoutMillis * 1_000_000L) {

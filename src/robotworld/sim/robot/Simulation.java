@@ -15,6 +15,8 @@ public final class Simulation implements AutoCloseable {
     /** Longest simulated step: longer pauses are cut into these, so the robot cannot tunnel through walls. */
     private static final double MAX_STEP_SECONDS = 0.005;
     private static final long TICK_NANOS = 5_000_000L;
+    /** A tick this late means the simulator's thread did not get the CPU (a busy machine), not that time passed. */
+    private static final long STALL_NANOS = 50_000_000L;
 
     private final World world;
     private final Map<Integer, SimModule> modules = new TreeMap<>();
@@ -78,6 +80,11 @@ public final class Simulation implements AutoCloseable {
             java.util.concurrent.locks.LockSupport.parkNanos(TICK_NANOS);
             long now = System.nanoTime();
             step((now - last) / 1e9 * timeScale);
+            if (now - last > STALL_NANOS) {
+                // this JVM did not run the simulator for a while: a module's own clock would not have stopped, but
+                // neither would the master's frames have stopped reaching it, so the pause does not count as silence
+                stalled(now - last - TICK_NANOS);
+            }
             checkWatchdogs(now);
             last = now;
         }
@@ -114,6 +121,12 @@ public final class Simulation implements AutoCloseable {
         module.watchdog().fed(System.nanoTime());
         byte[] watchdogAnswer = module.faults().refusal() == 0 ? module.watchdog().respond(request) : null;
         return watchdogAnswer != null ? watchdogAnswer : RequestHandler.respond(module, request);
+    }
+
+    private synchronized void stalled(long nanos) {
+        for (SimModule module : modules.values()) {
+            module.watchdog().stalled(nanos);
+        }
     }
 
     /**
