@@ -170,7 +170,7 @@ final class ExploreCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
-        String robotHost = host != null ? host : localHostName();
+        String robotHost = host != null ? host : WorldAssembly.thisComputer();
         BaudRateSearch.Outcome outcome;
         try {
             outcome = BaudRateSearch.explore(rate -> new RS485Bus(port, SerialSettings.eightNoneOne(rate), timing)
