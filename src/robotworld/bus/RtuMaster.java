@@ -457,31 +457,48 @@ final class RtuMaster {
      * that is no frame goes to the disturbance listener.
      */
     private void salvage(int have) {
-        FrameLength lengths = lastSent == null ? null
-                : FrameLengths.responseTo(Arrays.copyOfRange(lastSent, 1, lastSent.length - 2));
+        if (lastSent == null) {
+            return;
+        }
+        FrameLength lengths = FrameLengths.responseTo(Arrays.copyOfRange(lastSent, 1, lastSent.length - 2));
         int start = 0;
         boolean pieceReported = false;
-        while (start + 4 <= have) {
+        while (start + 2 <= have) {
             int address = buffer[start] & 0xFF;
-            if (lengths != null && address >= 1 && address <= 247) {
-                byte[] rest = Arrays.copyOfRange(buffer, start, have);
-                int length = lengths.of(rest, rest.length);
-                if (length >= 4 && length <= rest.length && Crc16.isValidFrame(rest, length)) {
-                    stray(RtuFrame.decode(rest, length));
-                    start += length;
-                    pieceReported = false;
-                    continue;
+            if (address >= 1 && address <= 247) {
+                if (start + 4 <= have) {
+                    byte[] rest = Arrays.copyOfRange(buffer, start, have);
+                    int length = lengths.of(rest, rest.length);
+                    if (length >= 4 && length <= rest.length && Crc16.isValidFrame(rest, length)) {
+                        stray(RtuFrame.decode(rest, length));
+                        start += length;
+                        pieceReported = false;
+                        continue;
+                    }
                 }
-                if (!pieceReported) {
-                    // perhaps the start of a reply that was cut: its function code says how likely
-                    boolean heard = start + 1 < have && lastSent != null
-                            && (buffer[start + 1] & 0x7F) == (lastSent[1] & 0x7F);
-                    disturbed(address, heard);
-                    pieceReported = true;
+                if (startsLikeAReply(start, have)) {
+                    disturbed(address, true); // the start of a reply that was cut: a module is there
+                } else if (!pieceReported) {
+                    disturbed(address, false); // perhaps
                 }
+                pieceReported = true;
             }
             start++;
         }
+    }
+
+    /**
+     * Whether the bytes at {@code start} begin like a reply to the last request: an address, then its function
+     * code (or its exception), and for identification the MEI type 0x0E, so that noise rarely passes.
+     */
+    private boolean startsLikeAReply(int start, int have) {
+        int requested = lastSent[1] & 0xFF;
+        if ((buffer[start + 1] & 0x7F) != (requested & 0x7F)) {
+            return false;
+        }
+        boolean exception = (buffer[start + 1] & FunctionCodes.EXCEPTION_BIT) != 0;
+        return requested != FunctionCodes.ENCAPSULATED_INTERFACE || exception || start + 2 >= have
+                || (buffer[start + 2] & 0xFF) == FunctionCodes.MEI_READ_DEVICE_ID;
     }
 
     private void disturbed(int address, boolean heard) {

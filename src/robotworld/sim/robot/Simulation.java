@@ -90,10 +90,18 @@ public final class Simulation implements AutoCloseable {
         }
     }
 
-    /** Stops the ticker. */
+    /** Stops the ticker and waits (up to a second) until it has made its last step, so time stands still after. */
     @Override
     public void close() {
+        Thread running = ticker;
         ticker = null;
+        if (running != null && running != Thread.currentThread()) {
+            try {
+                running.join(1_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     /** Reads the world consistently, e.g. {@code simulation.inspect(World::pose)}. */
