@@ -6,7 +6,7 @@ import static robotworld.xvsm.X10Tuples.ON_CODE;
 import java.util.List;
 import robotworld.core.X10ApplianceModule;
 import robotworld.safety.Actuator;
-import robotworld.safety.SafeStates;
+import robotworld.safety.SwitchedSafeState;
 import robotworld.safety.X10SafeState;
 import robotworld.space.Entry;
 
@@ -20,15 +20,13 @@ import robotworld.space.Entry;
 public class XVSMX10ApplianceModuleLocal extends XVSMLocalModule<X10ApplianceModule>
         implements X10ApplianceModule, Actuator {
 
-    private final X10SafeState safeState;
-    /** Whether it was last switched on; null before the first command. */
-    private volatile Boolean switchedOn;
+    private final SwitchedSafeState safety;
 
     /** Serves {@code <participant><moduleName>REQUEST} for {@code hardware} with a thread of its own. */
     public XVSMX10ApplianceModuleLocal(XVSMRuntime runtime, String participant, String moduleName,
                                        X10ApplianceModule hardware) {
         super(runtime, participant, moduleName, hardware);
-        safeState = runtime.safety().x10SafeState(participant, moduleName);
+        safety = new SwitchedSafeState(runtime.safety().x10SafeState(participant, moduleName));
         start();
     }
 
@@ -46,7 +44,7 @@ public class XVSMX10ApplianceModuleLocal extends XVSMLocalModule<X10ApplianceMod
     protected List<Entry> perform(CallTuple request) {
         request.expectFields(0);
         boolean on = X10Tuples.isOn(request.function());
-        switchedOn = on;
+        safety.commanded(on);
         if (on) {
             hardware().on();
         } else {
@@ -57,16 +55,11 @@ public class XVSMX10ApplianceModuleLocal extends XVSMLocalModule<X10ApplianceMod
 
     @Override
     public String enterSafeState() {
-        String done = SafeStates.x10(safeState, hardware()::on, hardware()::off);
-        if (safeState != X10SafeState.UNCHANGED) {
-            switchedOn = safeState == X10SafeState.ON;
-        }
-        return done;
+        return safety.enter(hardware()::on, hardware()::off);
     }
 
     @Override
     public boolean isEngaged() {
-        Boolean on = switchedOn;
-        return on != null && (safeState == X10SafeState.OFF && on || safeState == X10SafeState.ON && !on);
+        return safety.isEngaged();
     }
 }

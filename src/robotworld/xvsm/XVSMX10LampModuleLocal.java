@@ -9,7 +9,7 @@ import static robotworld.xvsm.X10Tuples.ON;
 import java.util.List;
 import robotworld.core.X10LampModule;
 import robotworld.safety.Actuator;
-import robotworld.safety.SafeStates;
+import robotworld.safety.SwitchedSafeState;
 import robotworld.safety.X10SafeState;
 import robotworld.space.Entry;
 
@@ -22,15 +22,13 @@ import robotworld.space.Entry;
  */
 public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> implements X10LampModule, Actuator {
 
-    private final X10SafeState safeState;
-    /** Whether it was last switched on (or brightened, dimmed); null before the first command. */
-    private volatile Boolean switchedOn;
+    private final SwitchedSafeState safety;
 
     /** Serves {@code <participant><moduleName>REQUEST} for {@code hardware} with a thread of its own. */
     public XVSMX10LampModuleLocal(XVSMRuntime runtime, String participant, String moduleName,
                                   X10LampModule hardware) {
         super(runtime, participant, moduleName, hardware);
-        safeState = runtime.safety().x10SafeState(participant, moduleName);
+        safety = new SwitchedSafeState(runtime.safety().x10SafeState(participant, moduleName));
         start();
     }
 
@@ -59,7 +57,7 @@ public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> imple
         request.expectFields(1);
         int level = request.intAt(0);
         if (request.is(ON) || request.is(OFF) || request.is(BRIGHTEN) || request.is(DIM)) {
-            switchedOn = !request.is(OFF);
+            safety.commanded(!request.is(OFF));
         }
         if (request.is(ON)) {
             hardware().on();
@@ -77,16 +75,11 @@ public class XVSMX10LampModuleLocal extends XVSMLocalModule<X10LampModule> imple
 
     @Override
     public String enterSafeState() {
-        String done = SafeStates.x10(safeState, hardware()::on, hardware()::off);
-        if (safeState != X10SafeState.UNCHANGED) {
-            switchedOn = safeState == X10SafeState.ON;
-        }
-        return done;
+        return safety.enter(hardware()::on, hardware()::off);
     }
 
     @Override
     public boolean isEngaged() {
-        Boolean on = switchedOn;
-        return on != null && (safeState == X10SafeState.OFF && on || safeState == X10SafeState.ON && !on);
+        return safety.isEngaged();
     }
 }

@@ -24,11 +24,13 @@ import robotworld.safety.WorldStop;
  * through its space, from any computer, and reports per module.
  */
 @Command(name = "stop", mixinStandardHelpOptions = true,
-        description = {"Stop every actuator of a running RobotWorld, from any computer that reaches its space.",
-                "Every program serving actuators of the world puts them into their safe state at once (motors 0,",
-                "servos hold, X10 as configured) and answers; prints per participant and module: stopped,",
+        description = {"Stop every actuator of a running RobotWorld, from any computer that",
+                "reaches its space. Every program serving actuators of the world puts",
+                "them into their safe state at once (motors 0, servos hold, X10 as",
+                "configured) and answers; prints per participant and module: stopped,",
                 "no actuator, or unreachable. See docs/safety.md.",
-                "Exit code 0 when every actuator answered that it is stopped, 1 when one is unreachable or failed."})
+                "Exit code 0 when every actuator answered that it is stopped, 1 when",
+                "one is unreachable or failed."})
 final class StopCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "WORLD", description = "the RobotWorld description")

@@ -129,7 +129,10 @@ public final class Demo {
         long started = System.currentTimeMillis();
         summary.viewpoint = options.viewpoint();
         Path out = options.out().toAbsolutePath().normalize();
-        List<ProgramProcess> programs = new ArrayList<>();
+        List<ProgramProcess> programs = new java.util.concurrent.CopyOnWriteArrayList<>();
+        // Ctrl-C or SIGTERM of the demo itself ends its programs as it would: they stop their actuators first
+        Thread endPrograms = new Thread(() -> programs.forEach(ProgramProcess::close), "demo-shutdown");
+        Runtime.getRuntime().addShutdownHook(endPrograms);
         try {
             Files.createDirectories(out);
             runSteps(out, programs);
@@ -140,6 +143,11 @@ public final class Demo {
         } finally {
             for (ProgramProcess program : programs) {
                 program.close();
+            }
+            try {
+                Runtime.getRuntime().removeShutdownHook(endPrograms);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook ends them
             }
         }
         summary.elapsedMillis = System.currentTimeMillis() - started;
