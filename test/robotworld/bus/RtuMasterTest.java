@@ -171,6 +171,18 @@ class RtuMasterTest {
     }
 
     @Test
+    void aQuietCallsReplyThatCameInTimeCountsThoughTheNextCallComesAfterItsTimeout() throws InterruptedException {
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(request.clone())); // confirmed at once
+        RtuMaster master = master(link);
+        master.callQuietly(1, Pdus.writeSingleRegister(0, 500), Duration.ofMillis(10));
+        Thread.sleep(50); // the caller is busy elsewhere (or the machine is): the confirmation waits in the buffer
+        link.respondWith(request -> List.of(frame(request[0], BUMPERS_REPLY)));
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(0, master.statistics().timeouts(), "the confirmation came in time");
+        assertTrue(strays.isEmpty(), "and is not taken for a stray frame");
+    }
+
+    @Test
     void aQuietCallWithoutConfirmationDoesNotDisturbTheNextCall() {
         ScriptedBusLink link = new ScriptedBusLink(request -> List.of());
         RtuMaster master = master(link);
