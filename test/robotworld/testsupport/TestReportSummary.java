@@ -89,7 +89,7 @@ public final class TestReportSummary {
 
     static String describe(String name, Element problem) {
         StringBuilder text = new StringBuilder("FAILED ").append(name).append('\n');
-        String message = problem.getAttribute("message");
+        String message = message(problem);
         String type = problem.getAttribute("type");
         // an assertion's type says nothing; any other exception's type is half of what went wrong
         boolean assertion = type.isEmpty() || type.endsWith("AssertionFailedError") || type.endsWith("AssertionError");
@@ -100,7 +100,7 @@ public final class TestReportSummary {
         firstDifference(message).ifPresent(difference -> text.append(readable(difference, "    ")));
         // then the frames in project code and each cause: that is where the reader needs to look
         int shown = 0;
-        for (String line : problem.getTextContent().strip().split("\r?\n")) {
+        for (String line : stackBelowMessage(problem, message).split("\r?\n")) {
             line = line.strip();
             boolean projectFrame = line.startsWith("at robotworld.");
             boolean cause = line.startsWith("Caused by:");
@@ -113,6 +113,32 @@ public final class TestReportSummary {
             }
         }
         return text.toString();
+    }
+
+    /**
+     * The failure's message with its line breaks. The report keeps it in an attribute, where an XML reader turns
+     * every line break into a space (a multi-line message would print as one endless line), and at the head of the
+     * stack trace, where the breaks survive: that copy is taken when it is the same text.
+     */
+    static String message(Element problem) {
+        String attribute = problem.getAttribute("message");
+        String stack = problem.getTextContent().stripLeading();
+        String prefix = problem.getAttribute("type") + ": ";
+        int end = prefix.length() + attribute.length();
+        if (!attribute.isEmpty() && stack.startsWith(prefix) && stack.length() >= end) {
+            String original = stack.substring(prefix.length(), end);
+            if (original.replaceAll("[\r\n\t]", " ").equals(attribute)) {
+                return original;
+            }
+        }
+        return attribute;
+    }
+
+    /** The stack trace without its head (type and message): a message may quote frames of its own. */
+    private static String stackBelowMessage(Element problem, String message) {
+        String stack = problem.getTextContent().strip();
+        String head = problem.getAttribute("type") + (message.isEmpty() ? "" : ": " + message);
+        return stack.startsWith(head) ? stack.substring(head.length()) : stack;
     }
 
     private static String simpleName(String type) {
@@ -146,7 +172,8 @@ public final class TestReportSummary {
     private static String around(String text, int at) {
         int from = Math.max(0, at - DIFFERENCE_CONTEXT);
         int to = Math.min(text.length(), at + DIFFERENCE_CONTEXT);
-        return (from > 0 ? "..." : "") + text.substring(from, to).replace("\n", "\\n") + (to < text.length() ? "..." : "");
+        return (from > 0 ? "..." : "") + text.substring(from, to).replace("\n", "\\n")
+                + (to < text.length() ? "..." : "");
     }
 
     /**

@@ -58,6 +58,30 @@ class TestReportSummaryTest {
     }
 
     @Test
+    void aMultiLineMessageKeepsItsLinesThoughTheReportsAttributeLostThem() throws Exception {
+        // as the legacy XML report writes it: raw line breaks in the attribute, which a reader turns into spaces;
+        // the message quotes a child program's log, frames included, which are not this test's frames
+        String message = "step 7 failed; its log:\nException in thread main\n"
+                + "\tat robotworld.bus.RS485Bus.decode(X.java:1)";
+        String report = "<testcase><failure message=\"" + message + "\" type=\"org.opentest4j.AssertionFailedError\">"
+                + "<![CDATA[org.opentest4j.AssertionFailedError: " + message + "\n"
+                + "\tat robotworld.explorer.demo.DemoTest.run(DemoTest.java:7)\n"
+                + "\tat org.junit.Runner.run(Runner.java:1)\n"
+                + "]]></failure></testcase>";
+        Element failure = (Element) DocumentBuilderFactory.newInstance().newDocumentBuilder()
+                .parse(new java.io.ByteArrayInputStream(report.getBytes(java.nio.charset.StandardCharsets.UTF_8)))
+                .getElementsByTagName("failure").item(0);
+        assertEquals(message.replaceAll("[\n\t]", " "), failure.getAttribute("message"), "what the attribute gives");
+        assertEquals("""
+                FAILED DemoTest > run()
+                    step 7 failed; its log:
+                    Exception in thread main
+                    \tat robotworld.bus.RS485Bus.decode(X.java:1)
+                      at robotworld.explorer.demo.DemoTest.run(DemoTest.java:7)
+                """, TestReportSummary.describe("DemoTest > run()", failure));
+    }
+
+    @Test
     void anExceptionShowsItsTypeProjectFramesAndCauseNotTheLibraryFrames() throws Exception {
         Document document = DocumentBuilderFactory.newInstance().newDocumentBuilder().newDocument();
         Element failure = document.createElement("failure");
