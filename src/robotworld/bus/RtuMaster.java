@@ -306,6 +306,7 @@ final class RtuMaster {
 
     private Reply readFrames(int address, byte[] request, FrameLength length, long deadline, boolean answersRequest) {
         int have = 0;
+        boolean looked = false;
         try {
             while (true) {
                 long wait = have == 0 ? deadline - System.nanoTime() : interByteNanos;
@@ -315,9 +316,16 @@ final class RtuMaster {
                         // what was dropped as the adapter's echo was the reply itself: this adapter did not echo
                         return classify(address, request, RtuFrame.decode(copy, copy.length).pdu());
                     }
-                    return Reply.TIMEOUT;
+                    // past the deadline before we even looked (a quiet call's reply is read at the next call, and a
+                    // busy machine runs threads late): a reply that came in time is in the buffer, so take what is
+                    // there once; after a read that waited out the deadline, silence is a timeout
+                    if (looked || link.available() == 0) {
+                        return Reply.TIMEOUT;
+                    }
                 }
-                int n = link.read(buffer, have, buffer.length - have, millisAtLeastOne(wait));
+                Duration readFor = wait <= 0 ? Duration.ZERO : millisAtLeastOne(wait);
+                int n = link.read(buffer, have, buffer.length - have, readFor);
+                looked = true;
                 if (n > 0) {
                     if (have == 0) {
                         firstByteAt = System.nanoTime();

@@ -52,7 +52,8 @@ class JSerialCommLinkTest {
             long start = System.nanoTime();
             assertEquals(-1, host.readByte(Duration.ofMillis(50)));
             long elapsedMs = (System.nanoTime() - start) / 1_000_000;
-            assertTrue(elapsedMs >= 40 && elapsedMs < 1_000, "waited " + elapsedMs + " ms");
+            // the upper bound only tells "returned" from "hung": a busy machine may add much to a 50 ms wait
+            assertTrue(elapsedMs >= 40 && elapsedMs < 5_000, "waited " + elapsedMs + " ms");
             assertEquals(0, host.read(new byte[4], 0, 4, Duration.ZERO));
         }
     }

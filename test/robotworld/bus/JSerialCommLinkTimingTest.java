@@ -20,8 +20,10 @@ class JSerialCommLinkTimingTest {
             a.open();
             b.open();
             byte[] buffer = new byte[16];
+            // the fastest of 5 to 20 tries: one unhindered read is enough to tell 10 ms from the 100 ms a
+            // tenth-of-a-second timer would give, and on a busy machine some tries are held up
             long fastest = Long.MAX_VALUE;
-            for (int i = 0; i < 5; i++) {
+            for (int i = 0; i < 5 || (i < 20 && fastest >= 60_000_000); i++) {
                 long start = System.nanoTime();
                 assertEquals(0, b.read(buffer, 0, buffer.length, Duration.ofMillis(10)));
                 fastest = Math.min(fastest, System.nanoTime() - start);

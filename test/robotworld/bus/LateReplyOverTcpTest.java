@@ -20,14 +20,16 @@ class LateReplyOverTcpTest {
     @Test
     void aReplyAfterItsTimeoutIsNeverTakenForTheNextCallsAnswer() throws Exception {
         String atTheWall = BusRig.FOUR_MODULES.replace("<Body x=\"500\"", "<Body x=\"1850\"");
-        try (BusRig rig = BusRig.tcp(atTheWall, BusRig.TIMING.withResponseTimeout(Duration.ofMillis(50))
-                .withAttempts(1))) { // 50 ms, 1 attempt
+        // a 250 ms timeout with one attempt (late-reply window 1 s) and a module that answers 600 ms late: the late
+        // reply comes while the next call waits out the window, and a busy machine has room to be slow in both
+        BusTiming timing = BusRig.TIMING.withResponseTimeout(Duration.ofMillis(250)).withAttempts(1);
+        try (BusRig rig = BusRig.tcp(atTheWall, timing)) {
             BumperModuleProxy bumper = new BumperModuleProxy(rig.bus(), 2, "Bumper-Sensor");
             assertEquals(FRONT_BUMPERS, bumper.getAllBumper());
 
-            rig.robot().faults(2).replyDelay(Duration.ofMillis(120));
+            rig.robot().faults(2).replyDelay(Duration.ofMillis(600));
             assertThrows(BusTimeoutException.class, () -> bumper.getSingleBumper(4)); // its 02 01 01 comes late
-            Thread.sleep(40); // the late reply is due 30 ms into the next call's 50 ms
+            Thread.sleep(200); // the late reply is due about 150 ms into the next call
             try {
                 assertEquals(FRONT_BUMPERS, bumper.getAllBumper(), "never the late single-bumper reply (1)");
             } catch (BusTimeoutException stillSlow) {

@@ -54,7 +54,8 @@ class TcpSerialLinkTest {
             long start = System.nanoTime();
             assertEquals(-1, host.readByte(Duration.ofMillis(50)));
             long elapsedMs = (System.nanoTime() - start) / 1_000_000;
-            assertTrue(elapsedMs >= 40 && elapsedMs < 1_000, "waited " + elapsedMs + " ms");
+            // the upper bound only tells "returned" from "hung": a busy machine may add much to a 50 ms wait
+            assertTrue(elapsedMs >= 40 && elapsedMs < 5_000, "waited " + elapsedMs + " ms");
             assertEquals(0, host.read(new byte[4], 0, 4, Duration.ZERO));
             assertEquals(0, host.available());
         }
@@ -87,7 +88,7 @@ class TcpSerialLinkTest {
             try (Socket second = server.accept(); SerialLink device = new TcpSerialLink(second)) {
                 long start = System.nanoTime();
                 assertEquals(-1, host.readByte(Duration.ofMillis(20))); // must not wait forever
-                assertTrue((System.nanoTime() - start) / 1_000_000 < 1_000);
+                assertTrue((System.nanoTime() - start) / 1_000_000 < 5_000);
                 device.write(0x55);
                 assertEquals(0x55, host.readByte(Duration.ofSeconds(2)));
             }

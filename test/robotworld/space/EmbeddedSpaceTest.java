@@ -16,7 +16,7 @@ import robotworld.space.contract.RecordingListener;
 /** What only the embedded implementation promises: its URI, its exact overflow point, its limits. */
 class EmbeddedSpaceTest {
 
-    private static final Duration SOON = Duration.ofSeconds(5);
+    private static final Duration SOON = Duration.ofSeconds(20); // only a failure waits that long
 
     @Test
     void crefsCarryTheSpaceUri() {

@@ -236,7 +236,8 @@ class CM11aControllerTest {
             X10TimeoutException e = assertThrows(X10TimeoutException.class, () -> rig.controller.on(A3));
             long elapsedMs = (System.nanoTime() - start) / 1_000_000;
             long documented = config.deadDeviceTimeout().toMillis(); // 3 attempts × 100 ms
-            assertTrue(elapsedMs >= documented - 10 && elapsedMs < documented + 300, "took " + elapsedMs + " ms");
+            // the upper bound leaves room for a busy machine: it tells "gave up as documented" from "hung"
+            assertTrue(elapsedMs >= documented - 10 && elapsedMs < documented + 3_000, "took " + elapsedMs + " ms");
             assertTrue(e.getMessage().contains(rig.controller.portName()), e.getMessage());
             assertTrue(e.getMessage().contains("04 62"), e.getMessage());
 
@@ -258,7 +259,7 @@ class CM11aControllerTest {
             long start = System.nanoTime();
             X10Exception e = assertThrows(X10Exception.class, () -> rig.controller.on(A3));
             long elapsedMs = (System.nanoTime() - start) / 1_000_000;
-            assertTrue(elapsedMs < config.deadDeviceTimeout().toMillis() + 300, "took " + elapsedMs + " ms");
+            assertTrue(elapsedMs < config.deadDeviceTimeout().toMillis() + 3_000, "took " + elapsedMs + " ms");
             assertTrue(e.getMessage().contains(rig.controller.portName()), e.getMessage());
         }
     }

@@ -167,7 +167,8 @@ class CM11aProtocolTest {
         X10TimeoutException e = assertThrows(X10TimeoutException.class, () -> controller.on(X10Address.of('A', 3)));
         long elapsedMs = (System.nanoTime() - start) / 1_000_000;
         long documented = CONFIG.deadDeviceTimeout().toMillis(); // 3 × 150 ms
-        assertTrue(elapsedMs >= documented - 10 && elapsedMs < documented + 300, "took " + elapsedMs + " ms");
+        // the upper bound leaves room for a busy machine: it tells "gave up as documented" from "hung"
+        assertTrue(elapsedMs >= documented - 10 && elapsedMs < documented + 3_000, "took " + elapsedMs + " ms");
         assertTrue(e.getMessage().contains("memory-a"), e.getMessage());
         assertTrue(e.getMessage().contains("04 62"), e.getMessage());
         device.expect("04 62 04 62 04 62"); // the frame went out once per attempt

@@ -38,8 +38,8 @@ final class Conditions {
         });
     }
 
-    /** {@link #eventually(String, Duration, BooleanSupplier)} with five seconds. */
+    /** {@link #eventually(String, Duration, BooleanSupplier)} with twenty seconds. */
     static void eventually(String what, BooleanSupplier condition) {
-        eventually(what, Duration.ofSeconds(5), condition);
+        eventually(what, Duration.ofSeconds(20), condition); // only a failure waits that long
     }
 }

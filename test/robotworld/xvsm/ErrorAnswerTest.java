@@ -81,7 +81,9 @@ class ErrorAnswerTest {
         assertTrue(timeout.hardwareTimedOut());
         assertTrue(timeout.getMessage().contains("TestBot/Bumper getAllBumper"), timeout.getMessage());
         assertTrue(timeout.getMessage().contains("host robot-pc"), timeout.getMessage());
-        assertTrue(millis < 2_000, "the bus gives up after 2 x 250 ms, the call took " + millis + " ms");
+        // the bus gives up after 2 x 250 ms; the bound only tells that apart from the 10 s call timeout, with room
+        // for a busy machine
+        assertTrue(millis < 6_000, "the bus gives up after 2 x 250 ms, the call took " + millis + " ms");
 
         world.robot.faults(BUMPER_ADDRESS).silent(false);
         assertEquals(XVSMWorld.CONTACT_MASK, remote.getAllBumper());
@@ -90,13 +92,15 @@ class ErrorAnswerTest {
     @Test
     void silentCm11aGivesATimeoutNotAHang() {
         XVSMX10LampModuleRemote remote = new XVSMX10LampModuleRemote(world.host("laptop"), ENVIRONMENT, LAMP);
-        remote.setCallTimeout(Duration.ofSeconds(5));
+        // far longer than the interface's 2 x 200 ms, so that the hardware's timeout answers first even on a busy
+        // machine
+        remote.setCallTimeout(Duration.ofSeconds(20));
         world.cm11a.powerOff();
         long start = System.nanoTime();
         ModuleCallTimeoutException timeout = assertThrows(ModuleCallTimeoutException.class, remote::on);
         assertTrue(timeout.hardwareTimedOut(), timeout.getMessage());
         assertTrue(timeout.getMessage().contains("Room/Lamp on"), timeout.getMessage());
-        assertTrue(System.nanoTime() - start < Duration.ofSeconds(4).toNanos());
+        assertTrue(System.nanoTime() - start < Duration.ofSeconds(10).toNanos(), "not a hang");
     }
 
     @Test
@@ -116,7 +120,7 @@ class ErrorAnswerTest {
                 timeout.getMessage());
         assertTrue(timeout.getMessage().contains("asked from host laptop"), timeout.getMessage());
         assertTrue(timeout.getMessage().contains("withdrawn"), timeout.getMessage());
-        assertTrue(millis >= 190 && millis < 1_500, "took " + millis + " ms");
+        assertTrue(millis >= 190 && millis < 5_000, "took " + millis + " ms"); // generous: the machine may be busy
         assertEquals(0, laptop.space().describeContainer(remote.requestContainer()).size(),
                 "a request nobody served is not left for a later Local side to carry out");
     }

@@ -7,6 +7,8 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -62,6 +64,8 @@ public final class Demo {
     static final String ENVIRONMENT = "DimRoom";
     static final String PACKAGE = "chapter5demo";
     private static final Duration START_TIMEOUT = Duration.ofSeconds(60);
+    /** How often the exploration step scans before it gives up on a module the simulated robot has. */
+    private static final int SCANS = 3;
     private static final Pattern STATS = Pattern.compile(
             "DEMO-STATS name=(\\w+) calls=(\\d+) p50us=(\\d+) p99us=(\\d+) maxus=(\\d+)");
     private static final Pattern BUMPS = Pattern.compile("DEMO-STATS name=bumps count=(\\d+)");
@@ -228,17 +232,40 @@ public final class Demo {
                     BusTiming.defaults())) {
                 RobotExplorer explorer = new RobotExplorer(bus, new ModuleCatalog(home.resolve("ModuleDescriptions")))
                         .host("robot-laptop");
-                // the whole address range, as a user's exploration does (about 3 s at 115200 baud)
-                say("scanning addresses 1..247 of " + sims.busPort);
-                ExplorationResult result = explorer.explore(ROBOT, new ExplorationListener() {
-                    @Override
-                    public void moduleFound(FoundModule module) {
-                        say("found " + module);
-                        if (module.moduleClass().contains("Bumper")) {
-                            bumperName = module.name();
+                // the whole address range, as a user's exploration does (about 3 s at 115200 baud). The demo knows
+                // which modules its simulated robot has: a scan that missed one (a busy machine can hold a
+                // simulated module's reply up past every window) is repeated, as a user would, and said so
+                Set<Integer> present = new TreeSet<>();
+                sims.robot.config().modules().forEach(module -> present.add(module.common().address()));
+                ExplorationResult result;
+                Set<Integer> missed;
+                int scan = 0;
+                do {
+                    scan++;
+                    say("scanning addresses 1..247 of " + sims.busPort + (scan > 1 ? " again (scan " + scan + " of "
+                            + SCANS + ")" : ""));
+                    result = explorer.explore(ROBOT, new ExplorationListener() {
+                        @Override
+                        public void moduleFound(FoundModule module) {
+                            say("found " + module);
+                            if (module.moduleClass().contains("Bumper")) {
+                                bumperName = module.name();
+                            }
                         }
+                    });
+                    missed = new TreeSet<>(present);
+                    for (FoundModule module : result.modules()) {
+                        missed.remove(module.address());
                     }
-                });
+                    if (!missed.isEmpty()) {
+                        say("the scan missed the simulated robot's module(s) at address(es) " + missed + " ("
+                                + result.statistics() + ")");
+                    }
+                } while (!missed.isEmpty() && scan < SCANS);
+                if (!missed.isEmpty()) {
+                    throw new IllegalStateException("after " + SCANS + " scans, the simulated robot's module(s) at "
+                            + "address(es) " + missed + " still did not answer");
+                }
                 if (result.description().isEmpty()) {
                     throw new IllegalStateException("no module found on the simulated robot's bus");
                 }

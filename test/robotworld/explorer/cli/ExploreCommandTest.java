@@ -56,8 +56,11 @@ class ExploreCommandTest {
     @Test
     void writesTheDescriptionListsProblemsAndShowsProgress() throws Exception {
         Path file = folder.resolve("robots/CliBot.xml");
+        // generous timing, as for a slow link: the progress shows each module as its probe finds it, and on a busy
+        // machine a simulated module may answer later than the default 8 ms scan allowance
         int code = rwe("explore", "--port", port, "--name", "CliBot", "--out", file.toString(), "--to", "10",
-                "--host", "robot-pc", "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString());
+                "--host", "robot-pc", "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString(),
+                "--scan-allowance", "500", "--timeout", "500");
         assertEquals(0, code, err.toString());
 
         ModuleListType described = DescriptionLoader.loadRobot(file).getRobotDescription();

@@ -101,9 +101,12 @@ public final class GuiTesting {
         }
     }
 
-    /** {@link #eventually(String, Duration, Callable)} with five seconds. */
+    /**
+     * {@link #eventually(String, Duration, Callable)} with twenty seconds: only a failure waits that long, and a
+     * busy machine may take seconds to get a window on the screen.
+     */
     public static void eventually(String what, Callable<Boolean> condition) {
-        eventually(what, Duration.ofSeconds(5), condition);
+        eventually(what, Duration.ofSeconds(20), condition);
     }
 
     /** Where screenshots go: {@code <rwe.build.dir or build>/screenshots}. */

@@ -102,7 +102,8 @@ class LauncherAndExploreTest {
                 frame.destinationField().setText(temp.toString());
                 frame.exploreButton().doClick();
             });
-            eventually("the exploration ends", Duration.ofSeconds(20), () -> frame.exploreButton().isEnabled());
+            // about 3 s on a quiet machine; only a failure waits the whole minute
+            eventually("the exploration ends", Duration.ofSeconds(60), () -> frame.exploreButton().isEnabled());
             assertTrue(onEdt(frame::statusText).startsWith("wrote "), onEdt(frame::statusText) + "\n"
                     + onEdt(frame::logText));
             assertTrue(Files.readString(temp.resolve("GuiBot.xml")).contains("<RobotName>GuiBot</RobotName>"));

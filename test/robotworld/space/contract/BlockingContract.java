@@ -42,7 +42,8 @@ public abstract class BlockingContract extends SpaceContract {
         ContainerRef ref = container(Order.FIFO);
         long start = System.nanoTime();
         assertThrows(SpaceTimeoutException.class, () -> space.take(ref, Timeout.TRY_ONCE));
-        assertTrue(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start) < 1000);
+        // "at once" as opposed to waiting: generous, since a busy machine may hold any call up for a while
+        assertTrue(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start) < SOON.toMillis() / 4);
         assertEquals(0, space.describeContainer(ref).blocked());
     }
 

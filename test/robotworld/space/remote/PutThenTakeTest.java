@@ -112,7 +112,7 @@ class PutThenTakeTest {
             assertThrows(SpaceTimeoutException.class, () -> client.writeThenTake(queue,
                     List.of(Item.of(Tuple.of("A", 1))), keyed, Timeout.ofMillis(250), Selector.key("A")));
             long millis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-            assertTrue(millis >= 240 && millis < 2_000, "took " + millis + " ms");
+            assertTrue(millis >= 240 && millis < 5_000, "took " + millis + " ms"); // generous: the machine may be busy
             assertEquals(List.of(Tuple.of("A", 1)), client.take(queue, Timeout.TRY_ONCE));
         }
     }

@@ -57,8 +57,11 @@ import robotworld.space.server.SpaceServer;
 @org.junit.jupiter.api.Timeout(60)
 class RemoteRecoveryTest {
 
-    private static final Duration SOON = Duration.ofSeconds(5);
+    /** How long a wait that should end soon may take on a busy machine (only a failure waits that long). */
+    private static final Duration SOON = Duration.ofSeconds(15);
     private static final long ALLOWANCE_MILLIS = 600;
+    /** What a busy machine may add to a bound; the bounds themselves are what is asserted against. */
+    private static final long SLACK_MILLIS = 2_000;
 
     private EmbeddedSpace space;
     private SpaceServer.Options serverOptions;
@@ -133,7 +136,8 @@ class RemoteRecoveryTest {
         for (Future<List<Entry>> taker : takers) {
             received.addAll(taker.get(timeoutMillis, TimeUnit.MILLISECONDS));
         }
-        assertTrue(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started) < timeoutMillis + ALLOWANCE_MILLIS);
+        assertTrue(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started)
+                < timeoutMillis + ALLOWANCE_MILLIS + SLACK_MILLIS);
         assertEquals(Set.of(Entry.of(10), Entry.of(11), Entry.of(12)), received, "each waiting take got one");
 
         List<Notification> seen = listener.awaitCount(4, SOON);
@@ -361,14 +365,14 @@ class RemoteRecoveryTest {
         SpaceUnavailableException down = assertThrows(SpaceUnavailableException.class,
                 () -> a.take(jobs, Timeout.ofMillis(300)));
         long took = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-        assertTrue(took >= 300 && took < 300 + ALLOWANCE_MILLIS + 300, "took " + took + " ms");
+        assertTrue(took >= 300 && took < 300 + ALLOWANCE_MILLIS + SLACK_MILLIS, "took " + took + " ms");
         assertTrue(down.getMessage().contains(":" + server.port()), down.getMessage());
         assertEquals(server.uri(), down.address());
 
         start = System.nanoTime();
         assertThrows(SpaceUnavailableException.class, () -> a.write(jobs, Timeout.TRY_ONCE, Entry.of(1)));
         took = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-        assertTrue(took < ALLOWANCE_MILLIS + 300, "a try-once write took " + took + " ms");
+        assertTrue(took < ALLOWANCE_MILLIS + SLACK_MILLIS, "a try-once write took " + took + " ms");
 
         restart();
         a.write(jobs, Timeout.TRY_ONCE, Entry.of(2));
@@ -383,7 +387,7 @@ class RemoteRecoveryTest {
         long start = System.nanoTime();
         assertThrows(SpaceTimeoutException.class, () -> a.take(jobs, Timeout.ofMillis(2_500))); // server waits 1 s
         long took = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-        assertTrue(took >= 2_490 && took < 2_500 + ALLOWANCE_MILLIS, "took " + took + " ms");
+        assertTrue(took >= 2_490 && took < 2_500 + ALLOWANCE_MILLIS + SLACK_MILLIS, "took " + took + " ms");
 
         Future<List<Entry>> taker = threads.submit(() -> a.take(jobs, Timeout.INFINITE));
         eventually("the take waits", () -> blocked(jobs) == 1);

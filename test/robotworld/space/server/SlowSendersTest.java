@@ -56,7 +56,9 @@ class SlowSendersTest {
                 long[] during = timeCalls(client, queue);
                 long medianDelayMillis = TimeUnit.NANOSECONDS.toMillis(during[CALLS / 2] - before[CALLS / 2]);
                 long slowestMillis = TimeUnit.NANOSECONDS.toMillis(during[CALLS - 1]);
-                assertTrue(medianDelayMillis <= 100, SLOW_CONNECTIONS + " slow senders delayed a call by "
+                // a thread held per slow request would stop the server outright: the bound leaves room for a
+                // busy machine and still tells the two apart
+                assertTrue(medianDelayMillis <= 1_000, SLOW_CONNECTIONS + " slow senders delayed a call by "
                         + medianDelayMillis + " ms (median); before " + Arrays.toString(before) + ", during "
                         + Arrays.toString(during) + " ns");
                 assertTrue(slowestMillis < 5_000, "the slowest call took " + slowestMillis + " ms");
