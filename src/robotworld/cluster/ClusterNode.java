@@ -67,6 +67,7 @@ final class ClusterNode {
     private final ConcurrentSkipListSet<Long> inFlight = new ConcurrentSkipListSet<>();
     private final ConcurrentMap<OpId, LocalWaiter> waiters = new ConcurrentHashMap<>();
     private final ConcurrentMap<String, EventInbox> inboxes = new ConcurrentHashMap<>();
+    private final ConcurrentMap<String, Long> staleChecks = new ConcurrentHashMap<>();
     private final IExecutorService messages;
     private final ScheduledThreadPoolExecutor background;
     private final Delivery delivery;
@@ -328,8 +329,42 @@ final class ClusterNode {
             EventInbox inbox = inboxes.get(inboxKey(message.space(), message.container()));
             if (inbox != null) {
                 inbox.receive(message.events());
+            } else {
+                dropStaleSubscriptions(message.space(), message.container());
             }
         }
+    }
+
+    /**
+     * Events came for a container on which this member has no subscription any more: late events of one just
+     * ended, or a registration whose answer was lost. Asks the container (at most once a second) to drop this
+     * member's subscriptions that no inbox here knows.
+     */
+    private void dropStaleSubscriptions(String space, String container) {
+        String key = inboxKey(space, container);
+        long now = System.nanoTime();
+        Long last = staleChecks.get(key);
+        if (last != null && now - last < TimeUnit.SECONDS.toNanos(1)) {
+            return;
+        }
+        staleChecks.put(key, now);
+        runInBackground(() -> {
+            // a subscription made from now on gets a higher number (its inbox comes first, then its number)
+            long below = counter.get() + 1;
+            if (inboxes.containsKey(key)) {
+                return; // a subscription is being made or is active meanwhile
+            }
+            OpId call = begin();
+            try {
+                call(space, container, ContainerCall.unsubscribeOlder(call, below),
+                        deadlineIn(options.callAllowance().toMillis()), URI.create("cluster:" + space));
+            } catch (SpaceException e) {
+                LOG.log(Level.DEBUG, "could not drop stale subscriptions on " + container + ": " + e.getMessage());
+            } finally {
+                end(call);
+                staleChecks.remove(key);
+            }
+        });
     }
 
     private void undoAbandoned(String space, String container, OpId waiter) {

@@ -382,6 +382,8 @@ public final class ClusterSpace implements Capi {
             case NOT_FOUND, DESTROYED -> throw new ContainerNotFoundException("no container " + container
                     + " (destroyed, or never created)");
             case NOT_POSSIBLE -> throw new SpaceTimeoutException("not possible at once on " + container);
+            case FAILED -> throw new robotworld.space.SpaceException("the cluster failed a call on " + container
+                    + ": " + outcome.message);
             default -> throw new IllegalStateException("unexpected outcome " + outcome + " on " + container);
         };
     }

@@ -1,6 +1,7 @@
 package robotworld.cluster;
 
 import java.io.IOException;
+import java.lang.System.Logger.Level;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -28,12 +29,16 @@ import robotworld.space.Selector;
  */
 final class ContainerCall implements EntryProcessor<String, ContainerRecord, Outcome>, IdentifiedDataSerializable {
 
+    private static final System.Logger LOG = System.getLogger(ContainerCall.class.getName());
+
     /** Tombstones of destroyed containers are kept this long, so late calls learn the container was destroyed. */
     static final long TOMBSTONE_MINUTES = 10;
 
     /** What the call does. */
     enum Kind {
         READ, TAKE, DESTROY, WRITE, SHIFT, COLLECT, WITHDRAW, WITHDRAW_AND_UNDO, ACKNOWLEDGE, SUBSCRIBE, UNSUBSCRIBE,
+        /** Drops the calling member's subscriptions numbered below {@link #after}. */
+        UNSUBSCRIBE_OLDER,
         DESCRIBE, READ_JOURNAL, DESTROY_CONTAINER, FORGET_MEMBERS
     }
 
@@ -87,6 +92,13 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
     static ContainerCall about(Kind kind, OpId call, OpId target) {
         ContainerCall c = new ContainerCall(kind, call);
         c.target = target;
+        return c;
+    }
+
+    /** Drops the subscriptions of {@code call}'s member on the container that are numbered below {@code below}. */
+    static ContainerCall unsubscribeOlder(OpId call, long below) {
+        ContainerCall c = new ContainerCall(Kind.UNSUBSCRIBE_OLDER, call);
+        c.after = below;
         return c;
     }
 
@@ -154,7 +166,14 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             if (call != null) {
                 rules.collectGarbage(call.member(), lowWater);
             }
-            outcome = run(record, rules);
+            try {
+                outcome = run(record, rules);
+            } catch (RuntimeException e) {
+                // never throw out of here: what was changed must still reach the backups
+                LOG.log(Level.ERROR, "call " + this + " failed on container " + entry.getKey(), e);
+                outcome = Outcome.of(Outcome.Status.FAILED);
+                outcome.message = e.toString();
+            }
             if (call != null && !changes.isEmpty()) {
                 record.remember(call, outcome, now);
             }
@@ -180,7 +199,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
                 case ACKNOWLEDGE -> rules.acknowledge(targets);
                 case READ_JOURNAL -> rules.readJournal(after, targets);
                 case FORGET_MEMBERS -> rules.forgetMembers(live);
-                case UNSUBSCRIBE -> Outcome.of(Outcome.Status.DONE);
+                case UNSUBSCRIBE, UNSUBSCRIBE_OLDER -> Outcome.of(Outcome.Status.DONE);
                 default -> Outcome.of(Outcome.Status.DESTROYED);
             };
         }
@@ -196,6 +215,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             case ACKNOWLEDGE -> rules.acknowledge(targets);
             case SUBSCRIBE -> rules.subscribe(target);
             case UNSUBSCRIBE -> rules.unsubscribe(target);
+            case UNSUBSCRIBE_OLDER -> rules.unsubscribeOlder(call.member(), after);
             case DESCRIBE -> rules.describe();
             case READ_JOURNAL -> rules.readJournal(after, targets);
             case DESTROY_CONTAINER -> rules.destroy();

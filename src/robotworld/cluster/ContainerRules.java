@@ -178,6 +178,19 @@ final class ContainerRules {
     }
 
     /**
+     * Drops subscriptions of {@code member} numbered below {@code below}: it no longer knows them (their
+     * registration's answer was lost, or they ended and their unregistration failed).
+     */
+    Outcome unsubscribeOlder(UUID member, long below) {
+        for (OpId subscriber : List.copyOf(record.subscribers())) {
+            if (subscriber.member().equals(member) && subscriber.counter() < below) {
+                record.removeSubscriber(subscriber);
+            }
+        }
+        return Outcome.of(Outcome.Status.DONE);
+    }
+
+    /**
      * The journaled events after {@code after}, and whether they continue the chain from there without a gap and
      * {@code subscriptions} are all still registered (a member thought gone may have lost them).
      */

@@ -38,7 +38,9 @@ final class Outcome implements IdentifiedDataSerializable {
         /** A waiter was taken out of the queue before it was served. */
         WITHDRAWN,
         /** The container knows no such waiter. */
-        UNKNOWN
+        UNKNOWN,
+        /** The call failed on the owner for a reason of its own ({@link #message}); what it changed is kept. */
+        FAILED
     }
 
     Status status;

@@ -113,6 +113,16 @@ public final class ContainerContents {
         return entries;
     }
 
+    /** Every entry with its place, in the order {@code order} visits them (RANDOM: from a random start). */
+    public List<PlacedEntry> snapshot(robotworld.space.Order order) {
+        List<PlacedEntry> entries = new ArrayList<>(store.size());
+        store.visitInOrder(order, node -> {
+            entries.add(PlacedEntry.of(node));
+            return true;
+        });
+        return entries;
+    }
+
     // ---- the operations' effects ----
 
     /** The selected entries, now counted as used; null if the selectors do not find enough. */
