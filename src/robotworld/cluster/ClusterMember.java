@@ -7,6 +7,7 @@ import com.hazelcast.cluster.Address;
 import com.hazelcast.core.Hazelcast;
 import com.hazelcast.core.HazelcastInstance;
 
+import robotworld.space.ContainerRef;
 import robotworld.space.EmbeddedSpace;
 
 /**
@@ -87,6 +88,15 @@ public final class ClusterMember implements AutoCloseable {
 
     public ClusterOptions options() {
         return node.options();
+    }
+
+    ClusterNode node() {
+        return node;
+    }
+
+    /** Whether this member holds the primary copy of {@code container} (for tests that crash its owner). */
+    boolean owns(ContainerRef container) {
+        return hazelcast.getPartitionService().getPartition(container.id()).getOwner().localMember();
     }
 
     /**
