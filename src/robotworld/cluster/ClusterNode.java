@@ -8,8 +8,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentMap;
 import java.util.concurrent.ConcurrentSkipListSet;
@@ -17,7 +15,6 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
@@ -29,12 +26,12 @@ import com.hazelcast.core.DistributedObject;
 import com.hazelcast.core.HazelcastException;
 import com.hazelcast.core.HazelcastInstance;
 import com.hazelcast.core.HazelcastInstanceNotActiveException;
-import com.hazelcast.core.IExecutorService;
 import com.hazelcast.core.MemberLeftException;
 import com.hazelcast.core.OperationTimeoutException;
 import com.hazelcast.map.IMap;
 import com.hazelcast.spi.exception.RetryableException;
 import com.hazelcast.spi.exception.TargetDisconnectedException;
+import com.hazelcast.topic.ITopic;
 import com.hazelcast.splitbrainprotection.SplitBrainProtectionException;
 
 import robotworld.space.SpaceClosedException;
@@ -68,7 +65,8 @@ final class ClusterNode {
     private final ConcurrentMap<OpId, LocalWaiter> waiters = new ConcurrentHashMap<>();
     private final ConcurrentMap<String, EventInbox> inboxes = new ConcurrentHashMap<>();
     private final ConcurrentMap<String, Long> staleChecks = new ConcurrentHashMap<>();
-    private final IExecutorService messages;
+    /** Registration of this member's listener on its own topic. */
+    private volatile UUID topicRegistration;
     private final ScheduledThreadPoolExecutor background;
     private final Delivery delivery;
     private final UUID membershipRegistration;
@@ -79,7 +77,6 @@ final class ClusterNode {
         this.options = options;
         this.self = hazelcast.getCluster().getLocalMember().getUuid();
         this.idTag = Long.toString(self.getLeastSignificantBits() >>> 1, 36);
-        this.messages = hazelcast.getExecutorService(HazelcastSetup.MESSAGES);
         AtomicInteger threads = new AtomicInteger();
         this.background = new ScheduledThreadPoolExecutor(2, task -> {
             Thread thread = new Thread(task, "space-cluster-" + threads.incrementAndGet());
@@ -89,6 +86,7 @@ final class ClusterNode {
         background.setRemoveOnCancelPolicy(true);
         this.delivery = new Delivery("space-cluster");
         hazelcast.getUserContext().put(KEY, this);
+        listenToOwnTopic();
         this.membershipRegistration = hazelcast.getCluster().addMembershipListener(new MembershipListener() {
             @Override
             public void memberAdded(MembershipEvent event) {
@@ -108,9 +106,18 @@ final class ClusterNode {
                 TimeUnit.MILLISECONDS);
     }
 
-    /** The node of a running member (for messages arriving there), or null. */
+    /** The node of a running member, or null. */
     static ClusterNode of(HazelcastInstance hazelcast) {
         return (ClusterNode) hazelcast.getUserContext().get(KEY);
+    }
+
+    /**
+     * Messages to this member come on its own topic: a published message goes straight to the one member that
+     * listens, without an answer (cheaper than a task on an executor).
+     */
+    private void listenToOwnTopic() {
+        ITopic<MemberMessage> topic = hazelcast.getTopic(HazelcastSetup.MEMBER_TOPIC + self);
+        topicRegistration = topic.addMessageListener(message -> receive(message.getMessageObject()));
     }
 
     HazelcastInstance hazelcast() {
@@ -174,13 +181,17 @@ final class ClusterNode {
 
     /**
      * Runs {@code call} on its container's owner and passes its effects on. Failures that Hazelcast reports as
-     * worth repeating (the owner died, partitions move, too few members) are repeated with the same call id (so at
-     * most once in effect) until {@code deadline} ({@link System#nanoTime()}); then, or when the answer does not
-     * come by then, {@link SpaceUnavailableException}.
+     * worth repeating (the owner died, partitions move, too few members, no answer) are repeated with the same call
+     * id (so at most once in effect) until {@code deadline} ({@link System#nanoTime()}); then
+     * {@link SpaceUnavailableException}. Each attempt waits at most Hazelcast's call timeout, which is the call
+     * allowance ({@link HazelcastSetup}).
+     *
+     * <p>Calls are synchronous on purpose: Hazelcast's asynchronous map calls complete through a dependent stage
+     * that, on a computer with two cores, starts a new thread for every call.
      */
     Outcome call(String space, String container, ContainerCall call, long deadline, URI uri) {
         IMap<String, ContainerRecord> map = containers(space);
-        Outcome outcome = retrying(() -> map.submitToKey(container, call.lowWater(lowWater())), deadline, uri,
+        Outcome outcome = retrying(() -> map.executeOnKey(container, call.lowWater(lowWater())), deadline, uri,
                 call.kind() + " on " + container);
         dispatch(space, container, outcome);
         return outcome;
@@ -189,25 +200,31 @@ final class ClusterNode {
     /** Runs a naming call within {@code deadline}, repeating it as {@link #call} does. */
     NameRecord nameCall(String space, String name, NameCall call, long deadline, URI uri) {
         IMap<String, NameRecord> map = names(space);
-        return retrying(() -> map.submitToKey(name, call), deadline, uri, "naming '" + name + "'");
+        return retrying(() -> map.executeOnKey(name, call), deadline, uri, "naming '" + name + "'");
     }
 
     NameRecord lookupName(String space, String name, long deadline, URI uri) {
         IMap<String, NameRecord> map = names(space);
-        return retrying(() -> map.getAsync(name), deadline, uri, "lookup of '" + name + "'");
+        return retrying(() -> map.get(name), deadline, uri, "lookup of '" + name + "'");
     }
 
     void createRecord(String space, ContainerRecord record, long deadline, URI uri) {
         IMap<String, ContainerRecord> map = containers(space);
-        retrying(() -> map.setAsync(record.id(), record), deadline, uri, "creating " + record.id());
+        retrying(() -> {
+            map.set(record.id(), record);
+            return null;
+        }, deadline, uri, "creating " + record.id());
     }
 
     void deleteRecord(String space, String id, long deadline, URI uri) {
         IMap<String, ContainerRecord> map = containers(space);
-        retrying(() -> map.deleteAsync(id), deadline, uri, "deleting " + id);
+        retrying(() -> {
+            map.delete(id);
+            return null;
+        }, deadline, uri, "deleting " + id);
     }
 
-    private <T> T retrying(Supplier<CompletionStage<T>> invocation, long deadline, URI uri, String what) {
+    private <T> T retrying(Supplier<T> invocation, long deadline, URI uri, String what) {
         long pause = TimeUnit.MILLISECONDS.toNanos(20);
         boolean interrupted = false;
         try {
@@ -217,22 +234,10 @@ final class ClusterNode {
                 }
                 Throwable failure;
                 try {
-                    CompletableFuture<T> future = invocation.get().toCompletableFuture();
-                    while (true) {
-                        try {
-                            long left = deadline - System.nanoTime();
-                            return future.get(Math.max(left, 1), TimeUnit.NANOSECONDS);
-                        } catch (InterruptedException e) {
-                            interrupted = true; // the call's effect is not known yet: finish it, then tell the caller
-                        }
-                    }
-                } catch (ExecutionException e) {
-                    failure = e.getCause();
-                } catch (TimeoutException e) {
-                    throw new SpaceUnavailableException(uri, "the cluster did not answer " + what
-                            + " in time; its outcome is unknown", e);
+                    return invocation.get(); // Hazelcast's synchronous calls are not interruptible
                 } catch (RuntimeException e) {
-                    failure = e;
+                    failure = e instanceof HazelcastException && e.getCause() instanceof ExecutionException
+                            ? e.getCause().getCause() : e;
                 }
                 if (failure instanceof HazelcastInstanceNotActiveException) {
                     throw new SpaceClosedException("this cluster member has shut down");
@@ -262,6 +267,10 @@ final class ClusterNode {
         if (failure instanceof SplitBrainProtectionException) {
             return new SpaceUnavailableException(uri, "too few cluster members can reach each other (at least "
                     + options.effectiveMinimumMembers() + " needed) for " + what, failure);
+        }
+        if (failure instanceof OperationTimeoutException) {
+            return new SpaceUnavailableException(uri, "the cluster did not answer " + what + " in time; its outcome"
+                    + " is unknown", failure);
         }
         return new SpaceUnavailableException(uri, "the cluster could not complete " + what + ": " + failure,
                 failure);
@@ -301,16 +310,11 @@ final class ClusterNode {
     }
 
     private void send(UUID member, MemberMessage message) {
-        for (Member target : hazelcast.getCluster().getMembers()) {
-            if (target.getUuid().equals(member)) {
-                try {
-                    messages.executeOnMember(message, target);
-                } catch (RuntimeException e) {
-                    // the member is leaving: its waiters and subscriptions are forgotten with it
-                    LOG.log(Level.DEBUG, "could not pass effects to member " + member + ": " + e);
-                }
-                return;
-            }
+        try {
+            hazelcast.<MemberMessage>getTopic(HazelcastSetup.MEMBER_TOPIC + member).publish(message);
+        } catch (RuntimeException e) {
+            // the member is leaving (its waiters and subscriptions are forgotten with it), or this one is
+            LOG.log(Level.DEBUG, "could not pass effects to member " + member + ": " + e);
         }
     }
 
@@ -467,7 +471,12 @@ final class ClusterNode {
      * a subscription that may have missed events ends with a gap signal).
      */
     private void rejoined() {
+        UUID old = self;
         self = hazelcast.getCluster().getLocalMember().getUuid();
+        if (!self.equals(old)) {
+            hazelcast.getTopic(HazelcastSetup.MEMBER_TOPIC + old).removeMessageListener(topicRegistration);
+            listenToOwnTopic();
+        }
         LOG.log(Level.WARNING, "this member rejoined the cluster after a split; it now has id " + self);
         for (LocalWaiter waiter : waiters.values()) {
             waiter.wake();

@@ -4,7 +4,6 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentMap;
 
 import com.hazelcast.config.Config;
-import com.hazelcast.config.ExecutorConfig;
 import com.hazelcast.config.InMemoryFormat;
 import com.hazelcast.config.JavaSerializationFilterConfig;
 import com.hazelcast.config.JoinConfig;
@@ -12,6 +11,7 @@ import com.hazelcast.config.MapConfig;
 import com.hazelcast.config.MergePolicyConfig;
 import com.hazelcast.config.NetworkConfig;
 import com.hazelcast.config.SplitBrainProtectionConfig;
+import com.hazelcast.config.TopicConfig;
 import com.hazelcast.spi.merge.PutIfAbsentMergePolicy;
 import com.hazelcast.splitbrainprotection.SplitBrainProtectionOn;
 
@@ -26,8 +26,8 @@ final class HazelcastSetup {
     static final String CONTAINERS = "rwe.containers.";
     /** Map of one space's names: {@code rwe.names.<space>}. */
     static final String NAMES = "rwe.names.";
-    /** Executor that carries {@link MemberMessage}s. */
-    static final String MESSAGES = "rwe.messages";
+    /** Topic of one member, {@code rwe.member.<uuid>}: carries {@link MemberMessage}s to that member only. */
+    static final String MEMBER_TOPIC = "rwe.member.";
     static final String SPLIT_BRAIN_PROTECTION = "rwe.majority";
 
     private HazelcastSetup() {
@@ -50,6 +50,9 @@ final class HazelcastSetup {
         config.setProperty("hazelcast.max.no.heartbeat.seconds",
                 Long.toString(options.failureDetection().toSeconds()));
         config.setProperty("hazelcast.invocation.retry.pause.millis", "100");
+        // a call whose owner stays silent this long fails (and is repeated, at most once in effect)
+        config.setProperty("hazelcast.operation.call.timeout.millis",
+                Long.toString(Math.max(1_000, options.callAllowance().toMillis())));
         config.setProperty("hazelcast.merge.first.run.delay.seconds", "5");
         config.setProperty("hazelcast.merge.next.run.delay.seconds", "5");
 
@@ -85,7 +88,7 @@ final class HazelcastSetup {
                 .setStatisticsEnabled(false)
                 .setSplitBrainProtectionName(SPLIT_BRAIN_PROTECTION)
                 .setMergePolicyConfig(merge));
-        config.addExecutorConfig(new ExecutorConfig(MESSAGES).setPoolSize(4).setStatisticsEnabled(false));
+        config.addTopicConfig(new TopicConfig(MEMBER_TOPIC + "*").setStatisticsEnabled(false));
         return config;
     }
 }

@@ -4,8 +4,6 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 
-import com.hazelcast.core.HazelcastInstance;
-import com.hazelcast.core.HazelcastInstanceAware;
 import com.hazelcast.nio.ObjectDataInput;
 import com.hazelcast.nio.ObjectDataOutput;
 import com.hazelcast.nio.serialization.IdentifiedDataSerializable;
@@ -13,15 +11,15 @@ import com.hazelcast.nio.serialization.IdentifiedDataSerializable;
 /**
  * What a member passes on to another after a call on a container: which of the receiver's waiting operations were
  * served (their threads then collect the result from the container) and the events for the receiver's
- * subscriptions. Sent as a task to the receiving member; it hands itself to that member's {@link ClusterNode}.
+ * subscriptions. Published on the receiving member's own topic ({@link ClusterNode}), to which only that member
+ * listens.
  */
-final class MemberMessage implements Runnable, IdentifiedDataSerializable, HazelcastInstanceAware {
+final class MemberMessage implements IdentifiedDataSerializable {
 
     private String space;
     private String container;
     private List<OpId> wakes = List.of();
     private List<Event> events = List.of();
-    private transient HazelcastInstance instance;
 
     /** For deserialization. */
     MemberMessage() {
@@ -48,19 +46,6 @@ final class MemberMessage implements Runnable, IdentifiedDataSerializable, Hazel
 
     List<Event> events() {
         return events;
-    }
-
-    @Override
-    public void setHazelcastInstance(HazelcastInstance hazelcastInstance) {
-        this.instance = hazelcastInstance;
-    }
-
-    @Override
-    public void run() {
-        ClusterNode node = ClusterNode.of(instance);
-        if (node != null) {
-            node.receive(this);
-        }
     }
 
     @Override
