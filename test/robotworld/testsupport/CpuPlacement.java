@@ -55,8 +55,8 @@ public final class CpuPlacement {
         List<String> command = new ArrayList<>(List.of(taskset.toString(), "-c", "0",
                 Path.of(System.getProperty("java.home"), "bin", "java").toString()));
         for (String argument : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-            if (argument.startsWith("-D") || argument.startsWith("-Xm")) {
-                command.add(argument); // bench.* settings and the heap size
+            if (argument.startsWith("-D") || argument.startsWith("-Xm") || argument.startsWith("--add-")) {
+                command.add(argument); // bench.* settings, the heap size, access to JDK internals (Hazelcast)
             }
         }
         command.add("-D" + CONFINED_PROPERTY + "=true");

@@ -13,16 +13,18 @@ import java.util.concurrent.atomic.AtomicInteger;
 /**
  * The threads a space uses for notifications: a growing pool that runs listeners (so one slow listener holds
  * one thread, never a space operation or another listener), and one timer thread for subscription timeouts.
- * Both are daemon threads and are created only when first needed.
+ * Both are daemon threads and are created only when first needed. Shared with the clustered space, whose
+ * subscriptions are delivered the same way on the member where they were made.
  */
-final class Delivery {
+public final class Delivery {
 
     private final String name;
     private ExecutorService listeners;
     private ScheduledExecutorService timer;
     private boolean closed;
 
-    Delivery(String name) {
+    /** Threads named after {@code name}. */
+    public Delivery(String name) {
         this.name = name;
     }
 
@@ -67,7 +69,7 @@ final class Delivery {
     }
 
     /** Stops accepting work; listener tasks already submitted still run, so final signals get delivered. */
-    synchronized void close() {
+    public synchronized void close() {
         closed = true;
         if (listeners != null) {
             listeners.shutdown();

@@ -25,6 +25,8 @@ final class EntryStore {
     private final VectorSlots vector;
     private final Map<Entry, Node> values;
     private long clock;
+    /** Set only for a replicated container ({@link ContainerContents}); null on the embedded path. */
+    private Replication replication;
 
     EntryStore(ContainerSpec spec) {
         this.spec = spec;
@@ -35,6 +37,29 @@ final class EntryStore {
 
     int size() {
         return pool.size();
+    }
+
+    /**
+     * Reports every change from now on to {@code observer} and indexes nodes by their insertion stamp, so that the
+     * same changes can be replayed on a replica ({@link #placeReplica}, {@link #removeReplica},
+     * {@link #touchReplica}).
+     */
+    void replicate(ChangeObserver observer) {
+        Map<Long, Node> byStamp = new HashMap<>();
+        visitForward(byInsertion, node -> {
+            byStamp.put(node.written, node);
+            return true;
+        });
+        replication = new Replication(observer, byStamp);
+    }
+
+    long clock() {
+        return clock;
+    }
+
+    /** Continues stamping after {@code stamp} (a rebuilt replica's clock). */
+    void advanceClock(long stamp) {
+        clock = Math.max(clock, stamp);
     }
 
     /** Free places left; {@code Integer.MAX_VALUE} when unbounded. */
@@ -131,6 +156,9 @@ final class EntryStore {
         if (values != null) {
             values.put(entry, node);
         }
+        if (replication != null) {
+            replication.placed(node);
+        }
         return node;
     }
 
@@ -167,6 +195,9 @@ final class EntryStore {
         if (values != null) {
             values.put(node.entry, node);
         }
+        if (replication != null) {
+            replication.placed(node);
+        }
     }
 
     void remove(Node node) {
@@ -182,15 +213,77 @@ final class EntryStore {
         if (values != null) {
             values.remove(node.entry);
         }
+        if (replication != null) {
+            replication.removed(node);
+        }
     }
 
     /** Marks a node as just used (LRU). */
     void touch(Node node) {
         node.used = ++clock;
         byUsage.moveToEnd(node);
+        if (replication != null) {
+            replication.observer.touched(node);
+        }
+    }
+
+    // ---- replicas: replaying the changes a primary reported ----
+
+    /** Puts a node with the primary's stamps into its place in every structure. */
+    void placeReplica(Entry entry, String key, int position, long written, long used) {
+        Node node = new Node(entry, key, position, written);
+        node.used = used;
+        clock = Math.max(clock, Math.max(written, used));
+        restore(node); // by stamp: an appended node goes last, a restored one back where it was
+    }
+
+    void removeReplica(long written) {
+        Node node = replication.byStamp.get(written);
+        if (node != null) {
+            remove(node);
+        }
+    }
+
+    void touchReplica(long written, long used) {
+        Node node = replication.byStamp.get(written);
+        if (node != null) {
+            node.used = used;
+            clock = Math.max(clock, used);
+            byUsage.moveToEnd(node);
+            replication.observer.touched(node);
+        }
+    }
+
+    /** Visits every node in insertion order (oldest first). */
+    void visitByInsertion(NodeVisitor visitor) {
+        visitForward(byInsertion, visitor);
+    }
+
+    /** Receives every change of a replicated store. */
+    interface ChangeObserver {
+        void placed(Node node);
+
+        void removed(Node node);
+
+        void touched(Node node);
+    }
+
+    private record Replication(ChangeObserver observer, Map<Long, Node> byStamp) {
+        void placed(Node node) {
+            byStamp.put(node.written, node);
+            observer.placed(node);
+        }
+
+        void removed(Node node) {
+            byStamp.remove(node.written);
+            observer.removed(node);
+        }
     }
 
     void clear() {
+        if (replication != null) {
+            replication.byStamp.clear();
+        }
         byInsertion.clear();
         byUsage.clear();
         pool.clear();

@@ -26,8 +26,11 @@ import robotworld.space.Timeout;
  * <p>{@link #offer} runs inside the container's critical section, in operation order, and never blocks: when
  * the queue is full the subscription ends as {@link SubscriptionEnd#OVERFLOWED}, so the listener learns exactly
  * where its stream stops instead of silently missing notifications in the middle of it.
+ *
+ * <p>The clustered space uses it too: there {@code offer} is called in operation order by the member that receives
+ * the container's notifications.
  */
-final class QueuedSubscription implements Subscription {
+public final class QueuedSubscription implements Subscription {
 
     private static final System.Logger LOG = System.getLogger(QueuedSubscription.class.getName());
 
@@ -48,7 +51,12 @@ final class QueuedSubscription implements Subscription {
     private long deadline;
     private ScheduledFuture<?> expiry;
 
-    QueuedSubscription(ContainerRef container, Set<Operation> operations, NotificationMode mode, Timeout timeout,
+    /**
+     * A subscription that is not yet running; call {@link #start()}.
+     *
+     * @param onEnd called once, inside {@link #end}, when the subscription ends for any reason
+     */
+    public QueuedSubscription(ContainerRef container, Set<Operation> operations, NotificationMode mode, Timeout timeout,
                        NotificationListener listener, int queueCapacity, Delivery delivery,
                        Consumer<QueuedSubscription> onEnd) {
         this.container = container;
@@ -63,7 +71,7 @@ final class QueuedSubscription implements Subscription {
     }
 
     /** Starts the timeout clock. */
-    synchronized void start() {
+    public synchronized void start() {
         if (timeoutNanos >= 0) {
             deadline = System.nanoTime() + timeoutNanos;
             expiry = delivery.schedule(this::expireIfDue, timeoutNanos);
@@ -85,12 +93,12 @@ final class QueuedSubscription implements Subscription {
         end(SubscriptionEnd.CANCELLED);
     }
 
-    boolean wants(Operation operation) {
+    public boolean wants(Operation operation) {
         return endReason == null && operations.contains(operation);
     }
 
     /** Queues a notification; called in operation order from the container's critical section. */
-    synchronized void offer(Notification notification) {
+    public synchronized void offer(Notification notification) {
         if (endReason != null) {
             return;
         }
@@ -113,7 +121,7 @@ final class QueuedSubscription implements Subscription {
     }
 
     /** Ends the subscription (first reason wins); queued notifications are still delivered, then the reason. */
-    synchronized void end(SubscriptionEnd reason) {
+    public synchronized void end(SubscriptionEnd reason) {
         if (endReason != null) {
             return;
         }

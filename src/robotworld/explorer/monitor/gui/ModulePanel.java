@@ -11,7 +11,9 @@ import javax.swing.JPanel;
 /**
  * The frame every module panel shares: a titled border {@code <Class>: <Name>} (as in the thesis figures), the
  * module-specific body, and a status area with the {@link FreshnessLabel}, the last problem reported (a failed
- * call) and, for an actuator put into its safe state, who stopped it, when and why. Subclasses put their body in with {@link #setBody}. Swing thread only.
+ * call), whether notifications were missed (a gap in the space's notification stream) and, for an actuator put
+ * into its safe state, who stopped it, when and why. Subclasses put their body in with {@link #setBody}. Swing
+ * thread only.
  */
 public abstract class ModulePanel extends JPanel {
 
@@ -22,6 +24,8 @@ public abstract class ModulePanel extends JPanel {
     private final FreshnessLabel freshness = new FreshnessLabel();
     private final ProblemText problem = new ProblemText();
     private final JLabel stop = new JLabel();
+    private final JLabel gap = new JLabel();
+    private int gaps;
 
     protected ModulePanel(String moduleClass, String moduleName) {
         super(new BorderLayout(4, 4));
@@ -37,7 +41,14 @@ public abstract class ModulePanel extends JPanel {
         stop.setForeground(PROBLEM);
         stop.setName("stop");
         stop.setVisible(false);
-        status.add(stop, BorderLayout.SOUTH);
+        gap.setForeground(PROBLEM);
+        gap.setName("gap");
+        gap.setVisible(false);
+        JPanel lower = new JPanel();
+        lower.setLayout(new javax.swing.BoxLayout(lower, javax.swing.BoxLayout.Y_AXIS)); // hidden lines take no room
+        lower.add(gap);
+        lower.add(stop);
+        status.add(lower, BorderLayout.SOUTH);
         add(status, BorderLayout.SOUTH);
         getAccessibleContext().setAccessibleName(moduleClass + " " + moduleName);
     }
@@ -69,6 +80,25 @@ public abstract class ModulePanel extends JPanel {
     /** Clears the problem line (a good report arrived). */
     public void clearProblem() {
         problem.show("");
+    }
+
+    /**
+     * Shows that notifications of this module may have been missed at {@code when}; the line stays (with a count),
+     * since the answers shown around that moment may not be the whole story.
+     */
+    public void showGap(Instant when, String why) {
+        gaps++;
+        String at = java.time.format.DateTimeFormatter.ofPattern("HH:mm:ss")
+                .format(java.time.LocalTime.ofInstant(when, java.time.ZoneId.systemDefault()));
+        gap.setText(gaps == 1 ? "notifications missed at " + at : "notifications missed " + gaps + "x, last at " + at);
+        gap.setToolTipText(why);
+        gap.setVisible(true);
+        revalidate();
+    }
+
+    /** The gap line's text (empty when no notification was missed). */
+    public String gapText() {
+        return gap.isVisible() ? gap.getText() : "";
     }
 
     /** Shows that the module was put into its safe state, and why, until it is commanded again. */

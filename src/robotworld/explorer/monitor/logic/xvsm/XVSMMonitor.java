@@ -47,8 +47,14 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
 
         @Override
         public void gap(Gap gap) {
-            if (gap.ended() && (gap.module() == null || gap.module().equals(ref))) {
+            if (gap.module() != null && !gap.module().equals(ref)) {
+                return;
+            }
+            if (gap.ended()) {
                 SwingUtilities.invokeLater(() -> panel().showProblem("not watching: " + gap.why()));
+            } else {
+                // watching goes on, but answers may be missing (a slow monitor, or a cluster member that failed)
+                SwingUtilities.invokeLater(() -> panel().showGap(gap.at(), gap.why()));
             }
         }
     };

@@ -1,0 +1,300 @@
+package robotworld.cluster;
+
+import java.io.IOException;
+import java.lang.System.Logger.Level;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.UUID;
+import java.util.concurrent.TimeUnit;
+
+import com.hazelcast.map.EntryProcessor;
+import com.hazelcast.map.ExtendedMapEntry;
+import com.hazelcast.nio.ObjectDataInput;
+import com.hazelcast.nio.ObjectDataOutput;
+import com.hazelcast.nio.serialization.IdentifiedDataSerializable;
+
+import robotworld.space.Item;
+import robotworld.space.Selector;
+
+/**
+ * One call on one container, run by Hazelcast on the member that owns the container's partition, on that
+ * partition's thread: so the calls on a container run one at a time, in order (linearizable), and never block.
+ * The call's changes are logged and sent to the backups ({@link #getBackupProcessor()}) before the caller gets its
+ * answer (synchronous backups). A call that changed something remembers its outcome under its {@link OpId}: if
+ * the owner dies after applying it and Hazelcast sends it again to the new owner, the remembered outcome is
+ * returned instead of applying it twice.
+ */
+final class ContainerCall implements EntryProcessor<String, ContainerRecord, Outcome>, IdentifiedDataSerializable {
+
+    private static final System.Logger LOG = System.getLogger(ContainerCall.class.getName());
+
+    /** Tombstones of destroyed containers are kept this long, so late calls learn the container was destroyed. */
+    static final long TOMBSTONE_MINUTES = 10;
+
+    /** What the call does. */
+    enum Kind {
+        READ, TAKE, DESTROY, WRITE, SHIFT, COLLECT, WITHDRAW, WITHDRAW_AND_UNDO, ACKNOWLEDGE, SUBSCRIBE, UNSUBSCRIBE,
+        /** Drops the calling member's subscriptions numbered below {@link #after}. */
+        UNSUBSCRIBE_OLDER,
+        DESCRIBE, READ_JOURNAL, DESTROY_CONTAINER, FORGET_MEMBERS
+    }
+
+    private Kind kind;
+    /** The call's id (null for calls that change nothing or may safely run twice). */
+    private OpId call;
+    /** The calling member's oldest call still in progress: its outcomes before that are no longer needed. */
+    private long lowWater;
+    private Selector[] selectors = new Selector[0];
+    private List<Item> items = List.of();
+    /** 0 try once, -1 wait as long as it takes, n: wait up to n ms. */
+    private long waitMillis;
+    /** The waiter or subscription the call is about. */
+    private OpId target;
+    private List<OpId> targets = List.of();
+    private long after;
+    private Set<UUID> live = Set.of();
+
+    private transient List<Change> changes;
+
+    /** For deserialization. */
+    ContainerCall() {
+    }
+
+    private ContainerCall(Kind kind, OpId call) {
+        this.kind = kind;
+        this.call = call;
+    }
+
+    static ContainerCall retrieve(Kind kind, OpId call, Selector[] selectors, long waitMillis) {
+        ContainerCall c = new ContainerCall(kind, call);
+        c.selectors = selectors;
+        c.waitMillis = waitMillis;
+        return c;
+    }
+
+    static ContainerCall write(OpId call, List<Item> items, long waitMillis) {
+        ContainerCall c = new ContainerCall(Kind.WRITE, call);
+        c.items = items;
+        c.waitMillis = waitMillis;
+        return c;
+    }
+
+    static ContainerCall shift(OpId call, List<Item> items) {
+        ContainerCall c = new ContainerCall(Kind.SHIFT, call);
+        c.items = items;
+        return c;
+    }
+
+    /** COLLECT, WITHDRAW, WITHDRAW_AND_UNDO, SUBSCRIBE or UNSUBSCRIBE of {@code target}. */
+    static ContainerCall about(Kind kind, OpId call, OpId target) {
+        ContainerCall c = new ContainerCall(kind, call);
+        c.target = target;
+        return c;
+    }
+
+    /** Drops the subscriptions of {@code call}'s member on the container that are numbered below {@code below}. */
+    static ContainerCall unsubscribeOlder(OpId call, long below) {
+        ContainerCall c = new ContainerCall(Kind.UNSUBSCRIBE_OLDER, call);
+        c.after = below;
+        return c;
+    }
+
+    static ContainerCall acknowledge(OpId call, List<OpId> waiters) {
+        ContainerCall c = new ContainerCall(Kind.ACKNOWLEDGE, call);
+        c.targets = waiters;
+        return c;
+    }
+
+    static ContainerCall describe() {
+        return new ContainerCall(Kind.DESCRIBE, null);
+    }
+
+    /** The journal after {@code after}; incomplete also if any of {@code subscriptions} is no longer registered. */
+    static ContainerCall readJournal(long after, List<OpId> subscriptions) {
+        ContainerCall c = new ContainerCall(Kind.READ_JOURNAL, null);
+        c.after = after;
+        c.targets = subscriptions;
+        return c;
+    }
+
+    static ContainerCall destroyContainer(OpId call) {
+        return new ContainerCall(Kind.DESTROY_CONTAINER, call);
+    }
+
+    static ContainerCall forgetMembers(Set<UUID> live) {
+        ContainerCall c = new ContainerCall(Kind.FORGET_MEMBERS, null);
+        c.live = live;
+        return c;
+    }
+
+    ContainerCall lowWater(long value) {
+        this.lowWater = value;
+        return this;
+    }
+
+    Kind kind() {
+        return kind;
+    }
+
+    OpId id() {
+        return call;
+    }
+
+    // ---- on the owner ----
+
+    @Override
+    public Outcome process(Map.Entry<String, ContainerRecord> entry) {
+        ContainerRecord record = entry.getValue();
+        if (record == null) {
+            return Outcome.of(Outcome.Status.NOT_FOUND);
+        }
+        if (call != null) {
+            Outcome earlier = record.doneOutcome(call);
+            if (earlier != null) {
+                return earlier; // applied before the previous owner died: do not apply it again
+            }
+        }
+        changes = new ArrayList<>();
+        record.logInto(changes);
+        Outcome outcome;
+        try {
+            long now = System.currentTimeMillis();
+            ContainerRules rules = new ContainerRules(record, now, new Outcome());
+            if (call != null) {
+                rules.collectGarbage(call.member(), lowWater);
+            }
+            try {
+                outcome = run(record, rules);
+            } catch (RuntimeException e) {
+                // never throw out of here: what was changed must still reach the backups
+                LOG.log(Level.ERROR, "call " + this + " failed on container " + entry.getKey(), e);
+                outcome = Outcome.of(Outcome.Status.FAILED);
+                outcome.message = e.toString();
+            }
+            if (call != null && !changes.isEmpty()) {
+                record.remember(call, outcome, now);
+            }
+        } finally {
+            record.logInto(null);
+        }
+        if (!changes.isEmpty()) {
+            if (record.destroyed() && entry instanceof ExtendedMapEntry<String, ContainerRecord> extended) {
+                extended.setValue(record, TOMBSTONE_MINUTES, TimeUnit.MINUTES);
+            } else {
+                entry.setValue(record);
+            }
+        }
+        return outcome;
+    }
+
+    private Outcome run(ContainerRecord record, ContainerRules rules) {
+        if (record.destroyed()) {
+            return switch (kind) {
+                case COLLECT -> rules.collect(target);
+                case WITHDRAW -> rules.withdraw(target, false);
+                case WITHDRAW_AND_UNDO -> rules.withdraw(target, true);
+                case ACKNOWLEDGE -> rules.acknowledge(targets);
+                case READ_JOURNAL -> rules.readJournal(after, targets);
+                case FORGET_MEMBERS -> rules.forgetMembers(live);
+                case UNSUBSCRIBE, UNSUBSCRIBE_OLDER -> Outcome.of(Outcome.Status.DONE);
+                default -> Outcome.of(Outcome.Status.DESTROYED);
+            };
+        }
+        return switch (kind) {
+            case READ -> rules.retrieve(call, WaiterRecord.Kind.READ, selectors, waitMillis);
+            case TAKE -> rules.retrieve(call, WaiterRecord.Kind.TAKE, selectors, waitMillis);
+            case DESTROY -> rules.retrieve(call, WaiterRecord.Kind.DESTROY, selectors, waitMillis);
+            case WRITE -> rules.write(call, items, waitMillis);
+            case SHIFT -> rules.shift(items);
+            case COLLECT -> rules.collect(target);
+            case WITHDRAW -> rules.withdraw(target, false);
+            case WITHDRAW_AND_UNDO -> rules.withdraw(target, true);
+            case ACKNOWLEDGE -> rules.acknowledge(targets);
+            case SUBSCRIBE -> rules.subscribe(target);
+            case UNSUBSCRIBE -> rules.unsubscribe(target);
+            case UNSUBSCRIBE_OLDER -> rules.unsubscribeOlder(call.member(), after);
+            case DESCRIBE -> rules.describe();
+            case READ_JOURNAL -> rules.readJournal(after, targets);
+            case DESTROY_CONTAINER -> rules.destroy();
+            case FORGET_MEMBERS -> rules.forgetMembers(live);
+        };
+    }
+
+    /** The backups replay exactly the changes this call made; nothing if it made none. */
+    @Override
+    public EntryProcessor<String, ContainerRecord, Outcome> getBackupProcessor() {
+        return changes == null || changes.isEmpty() ? null : new ApplyChanges(changes);
+    }
+
+    // ---- serialization ----
+
+    @Override
+    public int getFactoryId() {
+        return ClusterSerialization.FACTORY_ID;
+    }
+
+    @Override
+    public int getClassId() {
+        return ClusterSerialization.CONTAINER_CALL;
+    }
+
+    @Override
+    public void writeData(ObjectDataOutput out) throws IOException {
+        out.writeByte(kind.ordinal());
+        out.writeBoolean(call != null);
+        if (call != null) {
+            call.write(out);
+        }
+        out.writeLong(lowWater);
+        Codec.writeSelectors(out, selectors);
+        Codec.writeItems(out, items);
+        out.writeLong(waitMillis);
+        out.writeBoolean(target != null);
+        if (target != null) {
+            target.write(out);
+        }
+        out.writeInt(targets.size());
+        for (OpId waiter : targets) {
+            waiter.write(out);
+        }
+        out.writeLong(after);
+        out.writeInt(live.size());
+        for (UUID member : live) {
+            Codec.writeUuid(out, member);
+        }
+    }
+
+    @Override
+    public void readData(ObjectDataInput in) throws IOException {
+        kind = Kind.values()[in.readByte()];
+        call = in.readBoolean() ? OpId.read(in) : null;
+        lowWater = in.readLong();
+        selectors = Codec.readSelectors(in);
+        items = Codec.readItems(in);
+        waitMillis = in.readLong();
+        target = in.readBoolean() ? OpId.read(in) : null;
+        int targetCount = in.readInt();
+        if (targetCount > 0) {
+            targets = new ArrayList<>(targetCount);
+            for (int i = 0; i < targetCount; i++) {
+                targets.add(OpId.read(in));
+            }
+        }
+        after = in.readLong();
+        int liveCount = in.readInt();
+        if (liveCount > 0) {
+            live = new HashSet<>();
+            for (int i = 0; i < liveCount; i++) {
+                live.add(Codec.readUuid(in));
+            }
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "ContainerCall[" + kind + " " + call + "]";
+    }
+}

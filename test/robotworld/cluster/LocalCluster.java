@@ -1,0 +1,89 @@
+package robotworld.cluster;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.UUID;
+
+/**
+ * Members of one fresh cluster in this JVM, on loopback with free ports and a cluster name no other test run
+ * shares (several builds may run on this machine at once), with fast failure detection for failure tests.
+ */
+final class LocalCluster implements AutoCloseable {
+
+    final String name = "rwe-test-" + UUID.randomUUID().toString().substring(0, 8);
+    final List<ClusterMember> members = new ArrayList<>();
+    private final int minimumMembers;
+
+    private LocalCluster(int minimumMembers) {
+        this.minimumMembers = minimumMembers;
+    }
+
+    /** {@code size} members that see each other; the space serves while a majority of them does. */
+    static LocalCluster start(int size) {
+        LocalCluster cluster = new LocalCluster(size / 2 + 1);
+        try {
+            for (int i = 0; i < size; i++) {
+                cluster.addMember();
+            }
+            cluster.awaitSize(size);
+        } catch (RuntimeException | Error e) {
+            cluster.close();
+            throw e;
+        }
+        return cluster;
+    }
+
+    ClusterOptions options() {
+        List<String> known = new ArrayList<>();
+        for (ClusterMember member : members) {
+            known.add(member.address());
+        }
+        return ClusterOptions.named(name).withPort(0).withMembers(known).withMinimumMembers(minimumMembers)
+                .withFailureDetection(Duration.ofSeconds(3));
+    }
+
+    ClusterMember addMember() {
+        ClusterMember member = ClusterMember.start(options());
+        members.add(member);
+        return member;
+    }
+
+    ClusterMember member(int index) {
+        return members.get(index);
+    }
+
+    /** Waits until every member sees {@code size} members. */
+    void awaitSize(int size) {
+        long deadline = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+        for (ClusterMember member : members) {
+            while (member.memberCount() != size) {
+                if (System.nanoTime() > deadline) {
+                    throw new AssertionError(member + " sees " + member.memberCount() + " members, not " + size);
+                }
+                sleep(20);
+            }
+        }
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError(e);
+        }
+    }
+
+    @Override
+    public void close() {
+        for (ClusterMember member : members) {
+            try {
+                member.crash(); // no hand-over needed at the end of a test: quicker
+            } catch (RuntimeException e) {
+                // already gone
+            }
+        }
+        members.clear();
+    }
+}
