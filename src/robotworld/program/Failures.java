@@ -19,6 +19,7 @@ import java.util.regex.Pattern;
 import robotworld.bus.BusException;
 import robotworld.bus.BusTimeoutException;
 import robotworld.bus.InvalidPortNameException;
+import robotworld.bus.PortInUseException;
 import robotworld.space.SpaceRequestRejectedException;
 import robotworld.space.SpaceUnavailableException;
 import robotworld.x10.X10Exception;
@@ -157,7 +158,19 @@ public final class Failures {
         if (find(cause, UnknownHostException.class) != null) {
             return List.of(who + "unknown host in " + port + ".", "Check the host name" + orChoose(choose) + ".");
         }
-        if (message.contains("no such serial port") || SERIAL_ERROR.matcher(message).find()) {
+        PortInUseException inUse = find(cause, PortInUseException.class);
+        if (inUse != null) {
+            // the link names the program that holds the port
+            String held = firstLine(inUse.getMessage()).replaceAll(":? ?stop that program.*$", "");
+            return List.of(who + held + ".", "Stop that program (another copy of this one?)" + orChoose(choose) + ".");
+        }
+        if (message.contains("not a serial device")) {
+            return List.of(who + firstLine(message).replaceAll(": give the device itself.*$", "") + ".",
+                    "Give the serial device itself (/dev/ttyUSB0, /dev/serial/by-id/...)" + orChoose(choose) + ".");
+        }
+        if (find(cause, NoSuchFileException.class) != null || message.contains("no such serial")
+                || message.contains("permission denied") || message.contains("busy")
+                || message.contains("cannot open serial port")) {
             return serialPort(who, port, message, device, choose);
         }
         return List.of(who + "cannot open " + port + ": " + firstLine(message),
@@ -172,9 +185,9 @@ public final class Failures {
         Path file = devicePath(port);
         Matcher serial = SERIAL_ERROR.matcher(message);
         int errno = serial.find() ? Integer.parseInt(serial.group(1)) : -1;
-        boolean missing = file != null ? !Files.exists(file) : message.contains("no such serial port") || errno == 2;
-        boolean forbidden = file != null ? !missing && (!Files.isReadable(file) || !Files.isWritable(file))
-                : errno == 13 || errno == 1;
+        boolean missing = file != null ? !Files.exists(file) : message.contains("no such serial") || errno == 2;
+        boolean forbidden = message.contains("permission denied") || (file != null ? !missing
+                && (!Files.isReadable(file) || !Files.isWritable(file)) : errno == 13 || errno == 1);
         if (missing) {
             return List.of(who + "there is no serial port " + port + " on this computer.",
                     "Plug in " + device + " and check its name (ls /dev/serial/by-id/)" + orChoose(choose)

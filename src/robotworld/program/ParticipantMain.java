@@ -48,8 +48,13 @@ public final class ParticipantMain {
     private ParticipantMain() {
     }
 
-    /** Runs the program, reports a failure, and ends the process: status 0 when it returned, 1 when it failed. */
+    /**
+     * Runs the program, reports a failure, and ends the process: status 0 when it returned, 1 when it failed. The
+     * runtime's log goes to standard output, with what the program prints; standard error is left for the report
+     * of a failure (and what the program itself writes there).
+     */
     public static void run(String participant, Program program) {
+        logToStandardOutput();
         int status = runReporting(participant, program, System.err);
         System.err.flush();
         System.out.flush();
@@ -76,6 +81,22 @@ public final class ParticipantMain {
         lines.forEach(err::println);
         if (debug()) {
             failure.printStackTrace(err);
+        }
+    }
+
+    /**
+     * Points the runtime's log (SLF4J, written by Jetty's appender) at standard output. With another logging
+     * back end on the class path, its own configuration decides.
+     */
+    static void logToStandardOutput() {
+        try {
+            if (org.slf4j.LoggerFactory.getILoggerFactory() instanceof org.eclipse.jetty.logging.JettyLoggerFactory jetty
+                    && jetty.getJettyLogger(ParticipantMain.class.getName()).getAppender()
+                    instanceof org.eclipse.jetty.logging.StdErrAppender appender) {
+                appender.setStream(System.out);
+            }
+        } catch (LinkageError noJettyLogging) {
+            // a program assembled without Jetty's logging: nothing to point elsewhere
         }
     }
 

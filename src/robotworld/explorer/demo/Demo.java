@@ -54,7 +54,7 @@ import robotworld.xvsm.XVSMRuntime;
 import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
 
 /**
- * The chapter-5 proof of concept end to end (issue 10): space server, simulated robot and CM11A, exploration,
+ * The chapter-5 proof of concept end to end: space server, simulated robot and CM11A, exploration,
  * assembly, two generated and Ant-built frameworks, one of them with listing 5.2 in its main class, monitoring, a
  * bounded run and a summary. Every step prints what it does; a failed step ends the demo with a failed summary.
  */
