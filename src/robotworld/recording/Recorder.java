@@ -40,6 +40,7 @@ import robotworld.telemetry.WorldTelemetry;
 public final class Recorder implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
+    private static final long BEHIND_NANOS = 1_000_000_000L;
 
     /**
      * How a recorder works.
@@ -91,7 +92,8 @@ public final class Recorder implements AutoCloseable {
      * @param dropped  messages the recorder could not keep (its queue was full), plus events the tap reported lost
      * @param queued   messages waiting for the writing thread
      * @param elapsed  since the recording started
-     * @param behind   whether the writing thread falls behind (its queue is more than half full, or it dropped)
+     * @param behind   whether the writing thread falls behind (its queue is more than half full, or it dropped a
+     *                 message within the last second)
      * @param failure  why writing failed (then nothing more is written), or null
      */
     public record Status(long messages, long bytes, long dropped, int queued, Duration elapsed, boolean behind,
@@ -111,7 +113,7 @@ public final class Recorder implements AutoCloseable {
     private volatile String failure;
     private volatile long written;
     private volatile long bytes;
-    private volatile long droppedHighWater;
+    private volatile long lastDropNanos = System.nanoTime() - 2 * BEHIND_NANOS;
 
     // ---- the writing thread's state ----
     private final Map<String, Integer> schemaIds = new HashMap<>();
@@ -224,6 +226,7 @@ public final class Recorder implements AutoCloseable {
     public boolean offer(TelemetryMessage message) {
         if (closing || failure != null || !queue.offer(message)) {
             dropped.incrementAndGet();
+            lastDropNanos = System.nanoTime();
             return false;
         }
         return true;
@@ -234,7 +237,7 @@ public final class Recorder implements AutoCloseable {
         long lost = dropped.get() + tapLost.get();
         int waiting = queue.size();
         return new Status(written, bytes, lost, waiting, Duration.ofNanos(System.nanoTime() - startedNanos),
-                waiting > options.queueCapacity() / 2 || dropped.get() > droppedHighWater, failure);
+                waiting > options.queueCapacity() / 2 || System.nanoTime() - lastDropNanos < BEHIND_NANOS, failure);
     }
 
     /** Finishes the file: stops taking messages, writes what waits, the closing metadata, summary and footer. */
@@ -328,7 +331,6 @@ public final class Recorder implements AutoCloseable {
             gap.put("why", missed + " messages dropped: the recorder fell behind (" + now + " in all)");
             gap.put("ended", false);
             write(new TelemetryMessage(Topics.GAPS, WorldTelemetry.nanos(Instant.now()), TrafficJson.bytes(gap)));
-            droppedHighWater = now;
         }
     }
 

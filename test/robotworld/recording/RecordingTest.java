@@ -265,7 +265,7 @@ class RecordingTest {
         long dropped = offered - accepted;
         assertTrue(dropped > 0, "a one-message queue under a burst drops");
         assertEquals(dropped, recorder.status().dropped());
-        assertTrue(during.dropped() > 0 && during.behind(), during.toString());
+        assertTrue(during.dropped() > 0, during.toString());
         long reported = 0;
         long liveness = 0;
         try (McapReader reader = McapReader.open(file)) {

@@ -113,15 +113,19 @@ public final class WorldMonitor implements AutoCloseable {
         markReplay(space);
     }
 
-    /** A replayed run says so in every window's title (looked up off the Swing thread: it asks the space). */
+    /**
+     * A replayed run says so in every window's title and in a banner at its top (looked up off the Swing thread:
+     * it asks the space).
+     */
     private void markReplay(Capi space) {
         Thread lookup = new Thread(() -> {
             try {
                 ReplayMark.find(space).ifPresent(mark -> SwingUtilities.invokeLater(() -> {
-                    windows.forEach(each -> each.setTitle(mark.label() + " - " + each.getTitle()));
+                    List<javax.swing.JFrame> frames = new ArrayList<>(windows);
                     if (window != null) {
-                        window.setTitle(mark.label() + " - " + window.getTitle());
+                        frames.add(window);
                     }
+                    frames.forEach(frame -> markReplay(frame, mark));
                 }));
             } catch (RuntimeException e) {
                 // the monitors report an unreachable space on their panels
@@ -129,6 +133,29 @@ public final class WorldMonitor implements AutoCloseable {
         }, "monitor-replay-mark");
         lookup.setDaemon(true);
         lookup.start();
+    }
+
+    /** The title, and a banner above what the window shows at its top (the STOP button stays). */
+    private static void markReplay(javax.swing.JFrame frame, ReplayMark mark) {
+        frame.setTitle(mark.label() + " - " + frame.getTitle());
+        javax.swing.JLabel banner = new javax.swing.JLabel(mark.label() + ": a recorded run, nothing is driven");
+        banner.setName("replay-banner");
+        banner.setOpaque(true);
+        banner.setBackground(new java.awt.Color(0xFF, 0xE0, 0x80));
+        banner.setBorder(javax.swing.BorderFactory.createEmptyBorder(4, 6, 4, 6));
+        java.awt.Container content = frame.getContentPane();
+        javax.swing.JPanel top = new javax.swing.JPanel(new java.awt.BorderLayout());
+        top.add(banner, java.awt.BorderLayout.NORTH);
+        if (content.getLayout() instanceof java.awt.BorderLayout border) {
+            java.awt.Component north = border.getLayoutComponent(java.awt.BorderLayout.NORTH);
+            if (north != null) {
+                content.remove(north);
+                top.add(north, java.awt.BorderLayout.CENTER);
+            }
+        }
+        content.add(top, java.awt.BorderLayout.NORTH);
+        content.revalidate();
+        frame.repaint();
     }
 
     private StopButton stopButton(MonitoredWorld world, Capi space) {

@@ -26,8 +26,10 @@ class DemoTest {
     @EnumSource(Viewpoint.class)
     void theScenarioRunsEndToEndWithRealOutcomes(Viewpoint viewpoint) throws Exception {
         StringWriter text = new StringWriter();
+        // the robot-viewpoint run is also recorded, and its recording replayed (see DemoReplayCheck)
+        Path recording = viewpoint == Viewpoint.ROBOT ? temp.resolve("demo.mcap") : null;
         DemoOptions options = new DemoOptions(Duration.ofSeconds(12), viewpoint, temp.resolve("demo"), true,
-                ProjectFiles.root());
+                ProjectFiles.root()).recording(recording);
         DemoSummary summary = new Demo(options, new PrintWriter(text, true)).run();
         String output = text.toString();
 
@@ -59,6 +61,9 @@ class DemoTest {
         assertTrue(output.contains("safe state        the robot's actuators are in their safe state"), output);
         assertTrue(summary.stops().stream().anyMatch(stop -> stop.contains("CaterpillarRobot/")
                 && stop.contains("motors 1-8 set to 0")), summary.stops().toString());
+        if (recording != null) {
+            DemoReplayCheck.assertReplaysAsLive(recording, output);
+        }
     }
 
     @Test

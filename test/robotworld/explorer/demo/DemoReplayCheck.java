@@ -7,43 +7,37 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.time.LocalTime;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import robotworld.description.DescriptionLoader;
 import robotworld.explorer.monitor.ConsoleMonitor;
 import robotworld.explorer.monitor.MonitoredWorld;
 import robotworld.recording.Replayer;
 import robotworld.space.EmbeddedSpace;
-import robotworld.testsupport.ProjectFiles;
 
 /**
- * A recording of the demo ({@code ./antw demo -Drecord=FILE}) replays to the console monitor with the same
- * sequence of bumper, motor and lamp events, each at the time it happened, within 5 % of the run's length.
+ * Checks that a recording of the demo ({@code ./antw demo -Drecord=FILE}) replays to the console monitor with the
+ * same sequence of bumper, motor and lamp events, each at the time it happened, within 5 % of the run's length.
+ * {@link DemoTest} records its robot-viewpoint run and calls this, so the demo runs once for both.
  */
-class DemoReplayTest {
+final class DemoReplayCheck {
 
-    @TempDir
-    Path temp;
+    private DemoReplayCheck() {
+    }
 
     /** One console monitor line the tally showed: when, and what (participant module function value (host)). */
     record Event(long millis, String category, String what) {
     }
 
-    @Test
-    void theRecordedDemoReplaysToTheConsoleMonitorAsItHappened() throws Exception {
-        Path file = temp.resolve("demo.mcap");
-        StringWriter live = new StringWriter();
-        DemoSummary summary = new Demo(new DemoOptions(Duration.ofSeconds(10), Viewpoint.ROBOT, temp.resolve("demo"),
-                true, ProjectFiles.root()).recording(file), new PrintWriter(live, true)).run();
-        assertTrue(summary.succeeded(), summary.failures() + "\n" + live);
-        assertTrue(live.toString().contains("recorded ") && live.toString().contains("(0 dropped)"), live.toString());
-
+    /**
+     * Replays {@code file} at rate 1 to a console monitor and compares it with what the live demo's console monitor
+     * showed ({@code liveOutput}, the demo's output with the console tally's lines).
+     */
+    static void assertReplaysAsLive(Path file, String liveOutput) throws Exception {
+        assertTrue(liveOutput.contains("recorded ") && liveOutput.contains("(0 dropped)"), liveOutput);
         StringWriter replayed = new StringWriter();
         try (Replayer replayer = Replayer.open(file); EmbeddedSpace space = EmbeddedSpace.open()) {
             MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorldFromString(new String(
@@ -61,13 +55,13 @@ class DemoReplayTest {
         }
         assertTrue(replayed.toString().contains("# REPLAY of demo.mcap"), "marked as a replay:\n" + replayed);
 
-        List<Event> before = events(live.toString());
+        List<Event> before = events(liveOutput);
         List<Event> after = events(replayed.toString());
         Map<String, List<String>> liveSequences = sequences(before);
         Map<String, List<String>> replaySequences = sequences(after);
         assertTrue(liveSequences.get("bumper").stream().anyMatch(e -> e.contains("1>") || e.contains("true")),
-                "the demo bumped:\n" + live);
-        assertTrue(!liveSequences.get("motor").isEmpty() && !liveSequences.get("lamp").isEmpty(), live.toString());
+                "the demo bumped:\n" + liveOutput);
+        assertTrue(!liveSequences.get("motor").isEmpty() && !liveSequences.get("lamp").isEmpty(), liveOutput);
         assertEquals(liveSequences, replaySequences, "the same bumper, motor and lamp events in the same order");
 
         // timing: each event's offset from the first, replayed against live, within 5 % of the run's length
