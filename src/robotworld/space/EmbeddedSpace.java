@@ -21,7 +21,7 @@ import robotworld.space.internal.ContainerRegistry;
  * }
  * }</pre>
  */
-public final class EmbeddedSpace implements Capi {
+public final class EmbeddedSpace implements SpaceEngine, AsyncTakes {
 
     /** Undelivered notifications a subscription may queue before it ends as {@link SubscriptionEnd#OVERFLOWED}. */
     public static final int DEFAULT_NOTIFICATION_QUEUE = 10_000;
@@ -121,35 +121,78 @@ public final class EmbeddedSpace implements Capi {
         return containers.resolve(container).subscribe(operations, mode, timeout, listener);
     }
 
-    // ---- for servers that expose this space (not part of Capi) ----
+    // ---- for servers that expose this space (SpaceEngine, not part of Capi) ----
 
-    /**
-     * A {@link #take} (or, with {@link Operation#DESTROY}, a {@link #destroy}) whose effect can be undone with
-     * {@link Removal#restore()}. A server uses it to acknowledge before losing: it keeps the removal until the
-     * client confirms receipt and restores the entries if the confirmation never comes.
-     *
-     * @param container the container
-     * @param operation {@link Operation#TAKE} or {@link Operation#DESTROY}
-     * @param timeout   how long to wait for enough entries
-     * @param selectors a selector chain; none means one entry in the base order
-     * @return the removal, already done
-     */
+    @Override
     public Removal removeWithReceipt(ContainerRef container, Operation operation, Timeout timeout,
                                      Selector... selectors) {
         return containers.resolve(container).removeWithReceipt(operation, Objects.requireNonNull(timeout, "timeout"),
                 selectors);
     }
 
-    /**
-     * The sequence number of the latest operation on a container, as carried by {@link Notification#sequence()}.
-     * A remote client compares it across a reconnection to learn whether it missed operations.
-     *
-     * @param container the container
-     * @return the latest sequence number (0 before the first operation)
-     * @throws ContainerNotFoundException if the container does not exist
-     */
+    @Override
     public long sequence(ContainerRef container) {
         return containers.resolve(Objects.requireNonNull(container, "container")).sequence();
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public Pending readLater(ContainerRef container, Timeout timeout, Selector[] selectors,
+                             Completion<List<Entry>> done) {
+        Objects.requireNonNull(done, "done");
+        return containers.resolve(container).retrieveLater(Operation.READ, Objects.requireNonNull(timeout, "timeout"),
+                selectors, (Completion<Object>) (Completion<?>) done);
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public Pending removeLater(ContainerRef container, Operation operation, Timeout timeout, Selector[] selectors,
+                               Completion<Removal> done) {
+        Objects.requireNonNull(done, "done");
+        return containers.resolve(container).retrieveLater(operation, Objects.requireNonNull(timeout, "timeout"),
+                selectors, (Completion<Object>) (Completion<?>) done);
+    }
+
+    @Override
+    public Pending writeLater(ContainerRef container, Timeout timeout, List<Item> items, Completion<Void> done) {
+        Objects.requireNonNull(done, "done");
+        return containers.resolve(container).writeLater(Objects.requireNonNull(timeout, "timeout"), items,
+                new Completion<>() {
+                    @Override
+                    public void completed(Object result) {
+                        done.completed(null);
+                    }
+
+                    @Override
+                    public void failed(SpaceException failure) {
+                        done.failed(failure);
+                    }
+                });
+    }
+
+    @Override
+    public Pending takeLater(ContainerRef container, Timeout timeout, Selector[] selectors,
+                             Completion<List<Entry>> done) {
+        Objects.requireNonNull(done, "done");
+        return containers.resolve(container).retrieveLater(Operation.TAKE, Objects.requireNonNull(timeout, "timeout"),
+                selectors, new Completion<>() {
+                    @Override
+                    public void completed(Object removal) {
+                        done.completed(((Removal) removal).entries()); // in-process, a take needs no receipt
+                    }
+
+                    @Override
+                    public void failed(SpaceException failure) {
+                        done.failed(failure);
+                    }
+                });
+    }
+
+    @Override
+    public Pending shiftThenTakeLater(ContainerRef shiftTo, List<Item> items, ContainerRef takeFrom, Timeout timeout,
+                                      Selector[] selectors, Completion<List<Entry>> done) {
+        shift(shiftTo, timeout, items);
+        return takeLater(takeFrom, timeout, selectors, done);
     }
 
     @Override

@@ -22,6 +22,7 @@ import robotworld.space.Operation;
 import robotworld.space.Removal;
 import robotworld.space.Selector;
 import robotworld.space.SpaceClosedException;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
 import robotworld.space.SpaceInterruptedException;
 import robotworld.space.SpaceTimeoutException;
@@ -37,6 +38,8 @@ import robotworld.space.Timeout;
  */
 public final class ContainerEngine {
 
+    private static final System.Logger LOG = System.getLogger(ContainerEngine.class.getName());
+
     private final ContainerRef ref;
     private final ContainerSpec spec;
     private final ReentrantLock lock = new ReentrantLock();
@@ -46,6 +49,8 @@ public final class ContainerEngine {
     private final int queueCapacity;
     /** Oldest first. */
     private final LinkedList<Waiter> waiters = new LinkedList<>();
+    /** Thread-less waiters served in the current critical section, whose completions run after it. */
+    private List<Waiter> ready;
     private long sequence;
     /** Null while alive; otherwise how later callers fail. */
     private Supplier<SpaceException> gone;
@@ -188,7 +193,7 @@ public final class ContainerEngine {
                             lock.newCondition()));
                 }
             } finally {
-                lock.unlock();
+                unlock();
             }
         }
     }
@@ -251,7 +256,133 @@ public final class ContainerEngine {
             waiters.addLast(waiter);
             return await(waiter, timeout);
         } finally {
-            lock.unlock();
+            unlock();
+        }
+    }
+
+    // ---- waiting without a thread (SpaceEngine) ----
+
+    /** read, take or destroy that waits without a thread; take and destroy hand over a {@link Removal}. */
+    public SpaceEngine.Pending retrieveLater(Operation operation, Timeout timeout, Selector[] selectors,
+                                             SpaceEngine.Completion<Object> done) {
+        Validation.checkSelectors(spec, selectors);
+        if (operation == Operation.READ) {
+            return executeLater(timeout, false, () -> tryRetrieve(operation, selectors), done);
+        }
+        if (operation != Operation.TAKE && operation != Operation.DESTROY) {
+            throw new IllegalArgumentException("not a retrieving operation: " + operation);
+        }
+        return executeLater(timeout, true, () -> tryRemove(operation, selectors), done);
+    }
+
+    /** write that waits without a thread; completes with {@code Boolean.TRUE}. */
+    public SpaceEngine.Pending writeLater(Timeout timeout, List<Item> items, SpaceEngine.Completion<Object> done) {
+        Validation.checkWrite(spec, items);
+        if (items.isEmpty()) {
+            done.completed(Boolean.TRUE);
+            return SpaceEngine.Pending.DONE;
+        }
+        return executeLater(timeout, true, () -> tryWrite(items), done);
+    }
+
+    private SpaceEngine.Pending executeLater(Timeout timeout, boolean mutates, Waiter.Attempt attempt,
+                                             SpaceEngine.Completion<Object> done) {
+        Object result;
+        SpaceException failure = null;
+        lock.lock();
+        try {
+            failIfGone();
+            result = attempt.tryOnce();
+            if (result != null) {
+                if (mutates && !waiters.isEmpty()) {
+                    serveWaiters();
+                }
+            } else if (timeout.isTryOnce()) {
+                failure = new SpaceTimeoutException("not possible at once on " + describe());
+            } else {
+                Waiter waiter = new Waiter(attempt, mutates, null, done);
+                waiters.addLast(waiter);
+                if (!timeout.isInfinite()) {
+                    waiter.expiry = delivery.timeout(() -> expire(waiter, timeout),
+                            TimeUnit.MILLISECONDS.toNanos(timeout.millis()));
+                }
+                return () -> withdraw(waiter);
+            }
+        } finally {
+            unlock();
+        }
+        if (failure != null) {
+            done.failed(failure);
+        } else {
+            done.completed(result);
+        }
+        return SpaceEngine.Pending.DONE;
+    }
+
+    private void expire(Waiter waiter, Timeout timeout) {
+        lock.lock();
+        try {
+            if (!waiter.done) {
+                waiters.remove(waiter);
+                complete(waiter, null, new SpaceTimeoutException("timed out after " + timeout + " on " + describe()));
+            }
+        } finally {
+            unlock();
+        }
+    }
+
+    private boolean withdraw(Waiter waiter) {
+        lock.lock();
+        try {
+            if (waiter.done) {
+                return false;
+            }
+            waiters.remove(waiter);
+            waiter.done = true;
+            if (waiter.expiry != null) {
+                waiter.expiry.cancel();
+            }
+            return true;
+        } finally {
+            unlock();
+        }
+    }
+
+    /** Hands a waiter its outcome under the lock; a thread-less waiter's completion runs once the lock is released. */
+    private void complete(Waiter waiter, Object result, SpaceException failure) {
+        if (failure != null) {
+            waiter.fail(failure);
+        } else {
+            waiter.succeed(result);
+        }
+        if (waiter.completion != null) {
+            if (ready == null) {
+                ready = new ArrayList<>(2);
+            }
+            ready.add(waiter);
+        }
+    }
+
+    /**
+     * Releases the lock, then calls the completions of the thread-less waiters this critical section served, so
+     * they run on the thread that served them but never inside the lock.
+     */
+    private void unlock() {
+        List<Waiter> fire = null;
+        if (ready != null && lock.getHoldCount() == 1) {
+            fire = ready;
+            ready = null;
+        }
+        lock.unlock();
+        if (fire != null) {
+            for (Waiter waiter : fire) {
+                try {
+                    waiter.fire();
+                } catch (RuntimeException e) {
+                    LOG.log(System.Logger.Level.WARNING, "a completion of a waiting operation on " + describe()
+                            + " failed", e);
+                }
+            }
         }
     }
 
@@ -299,12 +430,12 @@ public final class ContainerEngine {
                     result = waiter.attempt.tryOnce();
                 } catch (SpaceException e) {
                     it.remove();
-                    waiter.fail(e);
+                    complete(waiter, null, e);
                     continue;
                 }
                 if (result != null) {
                     it.remove();
-                    waiter.succeed(result);
+                    complete(waiter, result, null);
                     if (waiter.mutates) {
                         changed = true;
                         break;
@@ -327,7 +458,7 @@ public final class ContainerEngine {
             subscription.start();
             return subscription;
         } finally {
-            lock.unlock();
+            unlock();
         }
     }
 
@@ -346,7 +477,7 @@ public final class ContainerEngine {
             hub.endAll(SubscriptionEnd.CONTAINER_DESTROYED);
             store.clear();
         } finally {
-            lock.unlock();
+            unlock();
         }
     }
 
@@ -361,13 +492,13 @@ public final class ContainerEngine {
             failWaiters(gone);
             hub.endAll(SubscriptionEnd.SPACE_CLOSED);
         } finally {
-            lock.unlock();
+            unlock();
         }
     }
 
     private void failWaiters(Supplier<? extends SpaceException> error) {
         for (Waiter waiter : waiters) {
-            waiter.fail(error.get());
+            complete(waiter, null, error.get());
         }
         waiters.clear();
     }
@@ -385,7 +516,7 @@ public final class ContainerEngine {
             failIfGone();
             return sequence;
         } finally {
-            lock.unlock();
+            unlock();
         }
     }
 
@@ -395,7 +526,7 @@ public final class ContainerEngine {
             failIfGone();
             return new ContainerInfo(ref, spec, store.size(), waiters.size(), hub.count());
         } finally {
-            lock.unlock();
+            unlock();
         }
     }
 

@@ -11,21 +11,29 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
- * The threads a space uses for notifications: a growing pool that runs listeners (so one slow listener holds
- * one thread, never a space operation or another listener), and one timer thread for subscription timeouts.
- * Both are daemon threads and are created only when first needed. Shared with the clustered space, whose
- * subscriptions are delivered the same way on the member where they were made.
+ * The threads a space uses: a growing pool that runs notification listeners (so one slow listener holds one
+ * thread, never a space operation or another listener), one timer thread for subscription timeouts, and one that
+ * times out operations waiting without a thread ({@link WaitTimer}). All are daemon threads, created only when
+ * first needed. Shared with the clustered space, whose subscriptions are delivered the same way on the member
+ * where they were made.
  */
 public final class Delivery {
 
     private final String name;
     private ExecutorService listeners;
     private ScheduledExecutorService timer;
+    private final WaitTimer waits;
     private boolean closed;
 
     /** Threads named after {@code name}. */
     public Delivery(String name) {
         this.name = name;
+        this.waits = new WaitTimer(name);
+    }
+
+    /** Runs {@code task} after {@code delayNanos}, for a wait's timeout (see {@link WaitTimer}); null once closed. */
+    WaitTimer.Timeout timeout(Runnable task, long delayNanos) {
+        return waits.schedule(task, delayNanos);
     }
 
     /** Runs {@code task} on a listener thread; ignored once closed. */
@@ -71,6 +79,7 @@ public final class Delivery {
     /** Stops accepting work; listener tasks already submitted still run, so final signals get delivered. */
     public synchronized void close() {
         closed = true;
+        waits.close();
         if (listeners != null) {
             listeners.shutdown();
         }

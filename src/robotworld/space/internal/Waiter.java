@@ -2,39 +2,71 @@ package robotworld.space.internal;
 
 import java.util.concurrent.locks.Condition;
 
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
 
 /**
  * A blocked operation, queued on its container. Whoever changes the container retries it (oldest first) inside
  * the same critical section and, on success, hands it the result; so an operation's effect and the hand-over are
  * one atomic step, and an entry taken for a waiter can never be lost by a timeout racing with it.
+ *
+ * <p>A waiter either has a waiting thread ({@link #wakeUp}, signalled) or, for an operation that waits without a
+ * thread, a {@link #completion} that the container calls once its lock is released.
  */
 final class Waiter {
 
     final Attempt attempt;
     /** Whether success changes the container, so that other waiters may be retried after it. */
     final boolean mutates;
+    /** The waiting thread's condition; null for a waiter without a thread. */
     final Condition wakeUp;
+    /** Where the outcome goes when no thread waits; null for a waiting thread. */
+    final SpaceEngine.Completion<Object> completion;
+    /** The timeout of a waiter without a thread, if it has one. */
+    WaitTimer.Timeout expiry;
     Object result;
     SpaceException failure;
     boolean done;
 
     Waiter(Attempt attempt, boolean mutates, Condition wakeUp) {
+        this(attempt, mutates, wakeUp, null);
+    }
+
+    Waiter(Attempt attempt, boolean mutates, Condition wakeUp, SpaceEngine.Completion<Object> completion) {
         this.attempt = attempt;
         this.mutates = mutates;
         this.wakeUp = wakeUp;
+        this.completion = completion;
     }
 
+    /** Records the result; a waiting thread is woken, a completion is left for the caller to run after unlocking. */
     void succeed(Object value) {
         result = value;
-        done = true;
-        wakeUp.signal();
+        settle();
     }
 
     void fail(SpaceException error) {
         failure = error;
+        settle();
+    }
+
+    private void settle() {
         done = true;
-        wakeUp.signal();
+        if (wakeUp != null) {
+            wakeUp.signal();
+        }
+        if (expiry != null) {
+            expiry.cancel();
+        }
+    }
+
+    /** Calls the completion with the outcome; outside the container's lock. */
+    void fire() {
+        if (failure != null) {
+            completion.failed(failure);
+        } else {
+            completion.completed(result);
+        }
     }
 
     /** One try of an operation against the current state: its result, or null if it must keep waiting. */

@@ -17,6 +17,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 
+import robotworld.space.AsyncTakes;
 import robotworld.space.Capi;
 import robotworld.space.ContainerInfo;
 import robotworld.space.ContainerRef;
@@ -28,6 +29,7 @@ import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
 import robotworld.space.Selector;
 import robotworld.space.SpaceClosedException;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
 import robotworld.space.SpaceInterruptedException;
 import robotworld.space.SpaceRequestRejectedException;
@@ -77,7 +79,7 @@ import robotworld.space.wire.WireWriter;
  * client reconnects and re-establishes every subscription. A subscription that may have missed an operation in
  * between ends as {@link SubscriptionEnd#OVERFLOWED} instead of going on with a silent gap.
  */
-public final class RemoteSpace implements Capi {
+public final class RemoteSpace implements Capi, AsyncTakes {
 
     private static final int BACKOFF_FIRST_MILLIS = 5;
     private static final int BACKOFF_MAX_MILLIS = 250;
@@ -95,6 +97,8 @@ public final class RemoteSpace implements Capi {
     private final AtomicLong lastCall = new AtomicLong();
     /** Waiting calls in progress, by call id, so that close() can cancel them on the server. */
     private final Map<String, Boolean> waitingCalls = new ConcurrentHashMap<>();
+    /** Takes that wait without a thread; created when first used. */
+    private AsyncCalls asyncCalls;
     private volatile URI spaceUri;
     volatile long serverMaxWaitMillis = 20_000;
     private volatile boolean closed;
@@ -275,8 +279,130 @@ public final class RemoteSpace implements Capi {
         return answer.entries;
     }
 
+    /**
+     * A take that waits without a thread: its answer is read by this client's I/O thread, which also runs
+     * {@code done} (see {@link AsyncTakes}). Otherwise it behaves as {@link #take}, except that a broken connection
+     * ends it with {@link SpaceUnavailableException} (after the server was asked to put back what it may have
+     * taken) instead of being repeated.
+     */
+    @Override
+    public SpaceEngine.Pending takeLater(ContainerRef container, Timeout timeout, Selector[] selectors,
+                                         SpaceEngine.Completion<List<Entry>> done) {
+        Objects.requireNonNull(container, "container");
+        Objects.requireNonNull(timeout, "timeout");
+        Objects.requireNonNull(done, "done");
+        for (Selector selector : selectors) {
+            Objects.requireNonNull(selector, "selector");
+        }
+        ensureOpen();
+        AsyncCalls.Request take = takeRequest(container, selectors);
+        AsyncCalls calls = asyncCalls();
+        return calls.start(calls.new Call(take, null, timeout, done));
+    }
+
+    /** {@link #shiftThenTake} whose take waits without a thread; see {@link #takeLater}. */
+    @Override
+    public SpaceEngine.Pending shiftThenTakeLater(ContainerRef shiftTo, List<Item> items, ContainerRef takeFrom,
+                                                  Timeout timeout, Selector[] selectors,
+                                                  SpaceEngine.Completion<List<Entry>> done) {
+        Objects.requireNonNull(shiftTo, "container");
+        Objects.requireNonNull(takeFrom, "takeFrom");
+        Objects.requireNonNull(timeout, "timeout");
+        Objects.requireNonNull(done, "done");
+        items.forEach(item -> Objects.requireNonNull(item, "item"));
+        for (Selector selector : selectors) {
+            Objects.requireNonNull(selector, "selector");
+        }
+        ensureOpen();
+        AsyncCalls.Request composite = new AsyncCalls.Request() {
+            @Override
+            public String operation() {
+                return "shiftThenTake";
+            }
+
+            @Override
+            public byte[] encode(String callId, Timeout wait) {
+                return RemoteSpace.this.encode((out, id, w) -> {
+                    out.cref("container", shiftTo).field("timeout", w.millis()).items(items).field("call", id);
+                    out.field("take").startObject().cref("container", takeFrom).selectors(selectors)
+                            .field("call", takeId(id)).endObject();
+                }, callId, wait);
+            }
+        };
+        AsyncCalls calls = asyncCalls();
+        return calls.start(calls.new Call(composite, takeRequest(takeFrom, selectors), timeout, done));
+    }
+
+    private AsyncCalls.Request takeRequest(ContainerRef container, Selector[] selectors) {
+        return new AsyncCalls.Request() {
+            @Override
+            public String operation() {
+                return "take";
+            }
+
+            @Override
+            public byte[] encode(String callId, Timeout wait) {
+                return RemoteSpace.this.encode((out, id, w) -> out.cref("container", container)
+                        .field("timeout", w.millis()).selectors(selectors).field("call", id), callId, wait);
+            }
+        };
+    }
+
+    private synchronized AsyncCalls asyncCalls() {
+        ensureOpen();
+        if (asyncCalls == null) {
+            try {
+                asyncCalls = new AsyncCalls(this);
+            } catch (IOException e) {
+                throw new SpaceException("cannot start the space client's I/O thread: " + e.getMessage(), e);
+            }
+        }
+        return asyncCalls;
+    }
+
+    // ---- for AsyncCalls ----
+
+    String newCallId() {
+        return clientId + ":" + lastCall.incrementAndGet();
+    }
+
+    /** Records (or forgets) a call that waits on the server, so that close() cancels it there. */
+    void waiting(String callId, boolean add) {
+        if (add) {
+            waitingCalls.put(callId, Boolean.TRUE);
+        } else {
+            waitingCalls.remove(callId);
+        }
+    }
+
+    AckQueue acks() {
+        return acks;
+    }
+
+    ScheduledExecutorService timer() {
+        return timer;
+    }
+
+    /** A complete HTTP request for {@code operation}, as one byte array. */
+    byte[] requestBytes(String operation, String ackHeader, byte[] body) {
+        String host = endpoint.host().contains(":") ? "[" + endpoint.host() + "]:" + endpoint.port()
+                : endpoint.host() + ":" + endpoint.port();
+        byte[] head = ("POST " + endpoint.path(operation) + " HTTP/1.1\r\nHost: " + host
+                + "\r\nContent-Type: application/json\r\nContent-Length: " + body.length + "\r\n"
+                + headers(ackHeader) + "\r\n").getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+        byte[] message = java.util.Arrays.copyOf(head, head.length + body.length);
+        System.arraycopy(body, 0, message, head.length, body.length);
+        return message;
+    }
+
+    /** Asks the server to cancel a call (a lost take's entries go back); one try within the network allowance. */
+    void cancelQuietly(String callId) {
+        exchangeQuietly("cancel", null, callId, System.nanoTime()
+                + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
+    }
+
     /** The call id of the take of a writeThenTake whose write has id {@code callId}. */
-    private static String takeId(String callId) {
+    static String takeId(String callId) {
         return callId + ".t";
     }
 
@@ -330,6 +456,11 @@ public final class RemoteSpace implements Capi {
         }
         closed = true;
         pool.close(); // breaks the waits of calls in progress: they throw SpaceClosedException
+        synchronized (this) {
+            if (asyncCalls != null) {
+                asyncCalls.close(); // takes waiting without a thread end with SpaceClosedException
+            }
+        }
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(Math.min(options.networkAllowanceMillis(), 1000));
         String pending;
         while ((pending = acks.drain()) != null && System.nanoTime() < deadline) {
@@ -679,7 +810,7 @@ public final class RemoteSpace implements Capi {
         }
     }
 
-    private SpaceException failure(int status, WireError kind, Answer answer) {
+    SpaceException failure(int status, WireError kind, Answer answer) {
         String message = answer.message == null ? answer.error : answer.message;
         if (kind == WireError.NO_SESSION) {
             return new SessionGoneException(message);

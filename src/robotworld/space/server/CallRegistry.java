@@ -6,13 +6,17 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
+import robotworld.space.SpaceEngine;
+
 /**
- * The blocking calls in progress, by the id their client gave them, so that a client can cancel a call it no
+ * The waiting calls in progress, by the id their client gave them, so that a client can cancel a call it no
  * longer waits for (its thread was interrupted) and the server can cancel all of them when it stops.
  *
- * <p>Cancelling interrupts the thread that waits inside the space, and only while it does: the interrupt is
- * set and cleared under the call's monitor, so it never leaks into the servlet container. A cancel that
- * arrives before its call is remembered for a while, so the late call is refused instead of taking effect.
+ * <p>A waiting call holds no thread: it is an operation waiting in the space ({@link SpaceEngine.Pending}).
+ * Cancelling withdraws it there; if it was withdrawn, the canceller answers its request ("cancelled" or
+ * "stopping"), and if it had just completed, its completion sees the cancel and undoes what can be undone. A
+ * cancel that arrives before its call is remembered for a while, so the late call is refused instead of taking
+ * effect.
  */
 final class CallRegistry {
 
@@ -35,14 +39,18 @@ final class CallRegistry {
         return "~" + anonymous.incrementAndGet();
     }
 
-    /** Registers a call; null if it was cancelled before it arrived. */
-    InFlight begin(String id) {
+    /**
+     * Registers a call; null if it was cancelled before it arrived.
+     *
+     * @param onWithdrawn answers the call's request when a cancel withdrew its operation from the space
+     */
+    InFlight begin(String id, Runnable onWithdrawn) {
         synchronized (tombstones) {
             if (tombstones.remove(id) != null) {
                 return null;
             }
         }
-        InFlight call = new InFlight(id, Thread.currentThread());
+        InFlight call = new InFlight(id, onWithdrawn);
         if (running.putIfAbsent(id, call) != null) {
             throw new IllegalArgumentException("call id '" + id + "' is already in use");
         }
@@ -50,18 +58,32 @@ final class CallRegistry {
     }
 
     /**
-     * Ends a call's wait: after this, nothing interrupts its thread. Clears an interrupt a cancel left behind.
+     * Hands a call the operation that waits for it in the space. If a cancel came first, the operation is withdrawn
+     * at once (and the call answered as withdrawn), or, if it completed meanwhile, left to its completion.
+     */
+    void attach(InFlight call, SpaceEngine.Pending pending) {
+        synchronized (call) {
+            if (call.state != State.CANCELLED) {
+                call.pending = pending;
+                return;
+            }
+        }
+        if (pending.cancel()) {
+            call.onWithdrawn.run();
+        }
+    }
+
+    /**
+     * Ends a call's wait: its operation completed (or failed), and no cancel can withdraw it any more.
      *
-     * @return whether the call was cancelled (its effect, if any, must be undone)
+     * @return whether the call was cancelled meanwhile (its effect, if any, must be undone)
      */
     boolean finish(InFlight call) {
-        boolean cancelled;
         synchronized (call) {
-            cancelled = call.state == State.CANCELLED;
+            boolean cancelled = call.state == State.CANCELLED;
             call.state = State.FINISHED;
-            Thread.interrupted();
+            return cancelled;
         }
-        return cancelled;
     }
 
     /**
@@ -79,7 +101,7 @@ final class CallRegistry {
     }
 
     /**
-     * Cancels the call {@code id} if it still runs: interrupts its wait and waits (bounded) until it has settled.
+     * Cancels the call {@code id} if it still runs: withdraws its wait and waits (bounded) until it has settled.
      *
      * @return {@link Outcome#COMPLETED} if the call took effect anyway (a write that had just happened),
      *         {@link Outcome#CANCELLED} if it had no effect, null if no such call is running
@@ -89,7 +111,7 @@ final class CallRegistry {
         if (call == null) {
             return null;
         }
-        interrupt(call);
+        withdraw(call);
         try {
             call.settled.await(5, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
@@ -116,7 +138,7 @@ final class CallRegistry {
     /** Cancels every running call without waiting; used when the server stops. */
     void cancelAll() {
         for (InFlight call : running.values()) {
-            interrupt(call);
+            withdraw(call);
         }
     }
 
@@ -135,12 +157,18 @@ final class CallRegistry {
         return running.size();
     }
 
-    private static void interrupt(InFlight call) {
+    /** Marks a running call cancelled and withdraws its operation; a withdrawn call is answered here. */
+    private static void withdraw(InFlight call) {
+        SpaceEngine.Pending pending;
         synchronized (call) {
-            if (call.state == State.RUNNING) {
-                call.state = State.CANCELLED;
-                call.thread.interrupt();
+            if (call.state != State.RUNNING) {
+                return;
             }
+            call.state = State.CANCELLED;
+            pending = call.pending;
+        }
+        if (pending != null && pending.cancel()) {
+            call.onWithdrawn.run();
         }
     }
 
@@ -160,14 +188,17 @@ final class CallRegistry {
     /** One call in progress. */
     static final class InFlight {
         final String id;
-        final Thread thread;
+        final Runnable onWithdrawn;
         final CountDownLatch settled = new CountDownLatch(1);
+        /** Guarded by this. */
         State state = State.RUNNING;
+        /** The operation waiting in the space; guarded by this. */
+        SpaceEngine.Pending pending;
         volatile boolean tookEffect;
 
-        InFlight(String id, Thread thread) {
+        InFlight(String id, Runnable onWithdrawn) {
             this.id = id;
-            this.thread = thread;
+            this.onWithdrawn = onWithdrawn;
         }
     }
 }

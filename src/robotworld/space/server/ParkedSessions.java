@@ -9,7 +9,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 
-import robotworld.space.EmbeddedSpace;
+import robotworld.space.SpaceEngine;
 
 /**
  * Notification sessions of a gracefully stopped server, kept with their space for a grace period: their
@@ -18,7 +18,7 @@ import robotworld.space.EmbeddedSpace;
  */
 final class ParkedSessions {
 
-    private static final Map<EmbeddedSpace, List<EventSession>> PARKED = new IdentityHashMap<>();
+    private static final Map<SpaceEngine, List<EventSession>> PARKED = new IdentityHashMap<>();
     private static final ScheduledExecutorService TIMER = Executors.newSingleThreadScheduledExecutor(task -> {
         Thread thread = new Thread(task, "space-server-parked-sessions");
         thread.setDaemon(true);
@@ -28,7 +28,7 @@ final class ParkedSessions {
     private ParkedSessions() {
     }
 
-    static void park(EmbeddedSpace space, Collection<EventSession> sessions, long graceMillis) {
+    static void park(SpaceEngine space, Collection<EventSession> sessions, long graceMillis) {
         if (sessions.isEmpty()) {
             return;
         }
@@ -40,14 +40,14 @@ final class ParkedSessions {
     }
 
     /** The sessions parked for {@code space}, now owned by the caller. */
-    static List<EventSession> adopt(EmbeddedSpace space) {
+    static List<EventSession> adopt(SpaceEngine space) {
         synchronized (PARKED) {
             List<EventSession> sessions = PARKED.remove(space);
             return sessions == null ? List.of() : sessions;
         }
     }
 
-    private static void expire(EmbeddedSpace space, List<EventSession> batch) {
+    private static void expire(SpaceEngine space, List<EventSession> batch) {
         List<EventSession> expired = new ArrayList<>();
         synchronized (PARKED) {
             List<EventSession> parked = PARKED.get(space);

@@ -3,13 +3,13 @@ package robotworld.space.server;
 import java.net.URI;
 import java.util.concurrent.Semaphore;
 
-import robotworld.space.EmbeddedSpace;
+import robotworld.space.SpaceEngine;
 import robotworld.space.wire.WireContext;
 
 /** What the servlet and the server share: the space, the wire context, the options and the call bookkeeping. */
 final class ServerState {
 
-    final EmbeddedSpace space;
+    final SpaceEngine space;
     final URI publicUri;
     final WireContext wire;
     final SpaceServer.Options options;
@@ -18,11 +18,11 @@ final class ServerState {
     final CallRegistry calls;
     final LeaseTable leases;
     final SessionRegistry sessions;
-    /** Bounds the calls that wait inside the space at once (each holds a servlet thread). */
+    /** Bounds the calls that wait inside the space at once (each holds a small object, not a thread). */
     final Semaphore waitingPermits;
     volatile boolean stopping;
 
-    ServerState(EmbeddedSpace space, URI publicUri, WireContext wire, SpaceServer.Options options) {
+    ServerState(SpaceEngine space, URI publicUri, WireContext wire, SpaceServer.Options options) {
         this.space = space;
         this.publicUri = publicUri;
         this.wire = wire;

@@ -9,7 +9,8 @@ import robotworld.space.ContainerRef;
 import robotworld.space.Entry;
 import robotworld.space.Operation;
 import robotworld.space.Removal;
-import robotworld.space.SpaceInterruptedException;
+import robotworld.space.SpaceEngine;
+import robotworld.space.SpaceException;
 import robotworld.space.SpaceTimeoutException;
 import robotworld.space.Subscription;
 import robotworld.space.Timeout;
@@ -17,9 +18,12 @@ import robotworld.space.wire.WireError;
 import robotworld.space.wire.WireWriter;
 
 /**
- * The operations of the wire protocol, each run against the space with the request's fields and answered into a
- * writer. Waiting operations wait at most the server's maximum per request: a longer (or infinite) timeout gets
- * {@code {"more": true}} when that runs out, and the client asks again with what is left of its timeout.
+ * The operations of the wire protocol, each run against the space with the request's fields and answered through
+ * its {@link Exchange}. An operation that has to wait holds no thread: it waits in the space
+ * ({@link SpaceEngine}), and its answer is sent from the thread that completes it, typically the request that
+ * wrote the awaited entry. Waiting operations wait at most the server's maximum per request: a longer (or infinite)
+ * timeout gets {@code {"more": true}} when that runs out, and the client asks again with what is left of its
+ * timeout.
  */
 final class SpaceOperations {
 
@@ -29,8 +33,31 @@ final class SpaceOperations {
         this.state = state;
     }
 
-    /** Runs operation {@code name}; false if there is no such operation. */
-    boolean run(String name, RequestFields in, WireWriter out) {
+    /**
+     * Runs operation {@code name} and answers it through {@code exchange}, at once or, for an operation that waits,
+     * from the thread it completes on; false if there is no such operation. Failures known at once are thrown.
+     */
+    boolean run(String name, RequestFields in, Exchange exchange) {
+        switch (name) {
+            case "read" -> waiting(Operation.READ, in, exchange);
+            case "take" -> waiting(Operation.TAKE, in, exchange);
+            case "destroy" -> waiting(Operation.DESTROY, in, exchange);
+            case "write" -> waiting(Operation.WRITE, in, exchange);
+            case "writeThenTake" -> putThenTake(false, in, exchange);
+            case "shiftThenTake" -> putThenTake(true, in, exchange);
+            default -> {
+                Exchange.Body body = exchange.body();
+                if (!runAtOnce(name, in, body.out)) {
+                    return false;
+                }
+                exchange.answer(body);
+            }
+        }
+        return true;
+    }
+
+    /** The operations that never wait, answered into {@code out}; false if there is no such operation. */
+    private boolean runAtOnce(String name, RequestFields in, WireWriter out) {
         switch (name) {
             case "create" -> out.cref("container", state.space.createContainer(in.required(in.spec, "spec")));
             case "lookup" -> out.cref("container", state.space.lookupContainer(in.required(in.name, "name")));
@@ -38,12 +65,6 @@ final class SpaceOperations {
                     state.space.lookupOrCreateContainer(in.required(in.spec, "spec")));
             case "destroyContainer" -> state.space.destroyContainer(in.required(in.container, "container"));
             case "describe" -> describe(in, out);
-            case "read" -> waiting(Operation.READ, in, out);
-            case "take" -> waiting(Operation.TAKE, in, out);
-            case "destroy" -> waiting(Operation.DESTROY, in, out);
-            case "write" -> waiting(Operation.WRITE, in, out);
-            case "writeThenTake" -> putThenTake(false, in, out);
-            case "shiftThenTake" -> putThenTake(true, in, out);
             case "shift" -> shift(in, out);
             case "ack" -> in.required(in.calls, "calls").forEach(state.leases::acknowledge);
             case "cancel" -> cancel(in.required(in.call, "call"), out);
@@ -57,16 +78,6 @@ final class SpaceOperations {
         return true;
     }
 
-    /**
-     * A write or shift may have handed entries to calls waiting on other servlet threads. Giving up the CPU here
-     * lets such a call answer its client before this one finishes its own answer: on a machine with few cores
-     * that takes the thread switch off the critical path of a request/answer exchange (about 25 µs of ~190 µs on
-     * the 2-core test VM; see docs/benchmarks.md). With nothing else runnable it returns at once.
-     */
-    private static void letWokenCallsRunFirst() {
-        Thread.yield();
-    }
-
     private void describe(RequestFields in, WireWriter out) {
         ContainerInfo info = state.space.describeContainer(in.required(in.container, "container"));
         out.cref("container", info.ref())
@@ -78,84 +89,161 @@ final class SpaceOperations {
 
     // ---- waiting operations ----
 
-    private void waiting(Operation operation, RequestFields in, WireWriter out) {
-        waiting(operation, in, in.required(in.timeout, "timeout"), state.options.maxWaitMillis(), out);
+    /** What a waiting step hands on when the server's wait ran out before the requested timeout. */
+    private static final Object MORE = new Object();
+
+    /** Where the outcome of one waiting step goes: the next step, or the answer. */
+    private interface Step {
+        /** The operation happened with {@code result} (a Removal, entries, or TRUE for a write), or {@link #MORE}. */
+        void done(Object result);
+
+        /** It failed (without effect, except where an {@link ErrorAnswer} says {@code written}). */
+        void failed(RuntimeException failure);
+    }
+
+    private void waiting(Operation operation, RequestFields in, Exchange exchange) {
+        Exchange.Body body = exchange.body();
+        waitFor(operation, in, in.required(in.timeout, "timeout"), state.options.maxWaitMillis(), exchange,
+                new Step() {
+                    @Override
+                    public void done(Object result) {
+                        if (result == MORE) {
+                            body.out.field("more", true);
+                        } else {
+                            answer(operation, result, in.call, body.out);
+                        }
+                        exchange.answer(body);
+                    }
+
+                    @Override
+                    public void failed(RuntimeException failure) {
+                        exchange.fail(failure);
+                    }
+                });
     }
 
     /**
-     * Runs a read, take, destroy or write that may wait, at most {@code maxWait} ms here.
-     *
-     * @return false if the wait ran out before the requested timeout ({@code "more"} was answered: no effect)
+     * Runs a read, take, destroy or write that may wait, at most {@code maxWait} ms here, without holding a thread
+     * while it waits: the space calls back when it completes. {@code step} gets the result, or {@link #MORE} when
+     * the wait ran out before the requested timeout (no effect).
      */
-    private boolean waiting(Operation operation, RequestFields in, Timeout requested, long maxWait, WireWriter out) {
+    private void waitFor(Operation operation, RequestFields in, Timeout requested, long maxWait, Exchange exchange,
+                         Step step) {
         ContainerRef container = in.required(in.container, "container");
         if (operation == Operation.WRITE) {
             in.required(in.items, "items");
         }
         boolean split = requested.isInfinite() || requested.millis() > maxWait;
         Timeout wait = split ? Timeout.ofMillis(maxWait) : requested;
-        boolean blocks = !wait.isTryOnce();
-        if (!blocks && in.call != null && state.calls.isForbidden(in.call)) {
+        if (wait.isTryOnce()) {
+            if (in.call != null && state.calls.isForbidden(in.call)) {
+                throw new ErrorAnswer(WireError.CANCELLED, "call " + in.call + " was cancelled");
+            }
+            start(operation, container, wait, in, new SpaceEngine.Completion<>() {
+                @Override
+                public void completed(Object result) {
+                    if (operation == Operation.WRITE && in.call != null) {
+                        state.receipts.writeCompleted(in.call); // so a client whose answer is lost can learn it
+                    }
+                    step.done(result);
+                }
+
+                @Override
+                public void failed(SpaceException failure) {
+                    if (split && failure instanceof SpaceTimeoutException) {
+                        step.done(MORE);
+                    } else {
+                        step.failed(failure);
+                    }
+                }
+            });
+            return;
+        }
+        if (!state.waitingPermits.tryAcquire()) {
+            tryOnceOrBusy(operation, in, exchange, step);
+            return;
+        }
+        WaitingCall waiting = new WaitingCall(operation, split, step);
+        // calls without an id are registered too, so that a stopping server can end their wait
+        CallRegistry.InFlight call = state.calls.begin(in.call != null ? in.call : state.calls.anonymousId(),
+                waiting::withdrawn);
+        if (call == null) {
+            state.waitingPermits.release();
             throw new ErrorAnswer(WireError.CANCELLED, "call " + in.call + " was cancelled");
         }
-        if (blocks && !state.waitingPermits.tryAcquire()) {
-            return tryOnceOrBusy(operation, in, out);
-        }
+        waiting.call = call;
+        SpaceEngine.Pending pending;
         try {
-            CallRegistry.InFlight call = null;
-            if (blocks) {
-                // calls without an id are registered too, so that a stopping server can end their wait
-                call = state.calls.begin(in.call != null ? in.call : state.calls.anonymousId());
-                if (call == null) {
-                    throw new ErrorAnswer(WireError.CANCELLED, "call " + in.call + " was cancelled");
-                }
-            }
-            Object result = null;
-            boolean timedOut = false;
-            boolean interrupted = false;
-            try {
-                result = execute(operation, container, wait, in);
-            } catch (SpaceTimeoutException e) {
-                if (!split) {
-                    finishQuietly(call);
-                    throw e;
-                }
-                timedOut = true;
-            } catch (SpaceInterruptedException e) {
-                interrupted = true;
-            } catch (RuntimeException e) {
-                finishQuietly(call);
-                throw e;
-            }
-            boolean cancelled = call != null && state.calls.finish(call);
-            if (cancelled || interrupted) {
+            pending = start(operation, container, wait, in, waiting);
+        } catch (RuntimeException e) {
+            state.calls.finish(call);
+            state.calls.done(call, false);
+            state.waitingPermits.release();
+            throw e;
+        }
+        state.calls.attach(call, pending);
+    }
+
+    /** A registered call waiting in the space: settles it when the space calls back, or when a cancel withdrew it. */
+    private final class WaitingCall implements SpaceEngine.Completion<Object> {
+        private final Operation operation;
+        private final boolean split;
+        private final Step step;
+        CallRegistry.InFlight call;
+
+        WaitingCall(Operation operation, boolean split, Step step) {
+            this.operation = operation;
+            this.split = split;
+            this.step = step;
+        }
+
+        @Override
+        public void completed(Object result) {
+            boolean cancelled = state.calls.finish(call);
+            boolean wrote = operation == Operation.WRITE;
+            if (cancelled) {
                 if (result instanceof Removal removal) {
                     removal.restore();
                 }
-                boolean wroteAnyway = operation == Operation.WRITE && result != null;
-                if (call != null) {
-                    state.calls.done(call, wroteAnyway);
+                state.calls.done(call, wrote);
+                state.waitingPermits.release();
+                if (!wrote) {
+                    step.failed(noEffect());
+                    return;
                 }
-                if (!wroteAnyway) {
-                    throw state.stopping
-                            ? new ErrorAnswer(WireError.STOPPING, "the server is stopping; the operation had no effect")
-                            : new ErrorAnswer(WireError.CANCELLED, "the call was cancelled; it had no effect");
-                }
-            } else if (call != null) {
-                state.calls.done(call, operation == Operation.WRITE && result != null);
-            } else if (operation == Operation.WRITE && in.call != null) {
-                state.receipts.writeCompleted(in.call); // so a client whose answer is lost can learn it happened
-            }
-            if (timedOut) {
-                out.field("more", true);
-                return false;
-            }
-            answer(operation, result, in.call, out);
-            return true;
-        } finally {
-            if (blocks) {
+            } else {
+                state.calls.done(call, wrote);
                 state.waitingPermits.release();
             }
+            step.done(result);
+        }
+
+        @Override
+        public void failed(SpaceException failure) {
+            boolean cancelled = state.calls.finish(call);
+            state.calls.done(call, false);
+            state.waitingPermits.release();
+            if (cancelled) {
+                step.failed(noEffect());
+            } else if (split && failure instanceof SpaceTimeoutException) {
+                step.done(MORE);
+            } else {
+                step.failed(failure);
+            }
+        }
+
+        /** A cancel withdrew the operation from the space: it had no effect. */
+        void withdrawn() {
+            state.calls.finish(call);
+            state.calls.done(call, false);
+            state.waitingPermits.release();
+            step.failed(noEffect());
+        }
+
+        private ErrorAnswer noEffect() {
+            return state.stopping
+                    ? new ErrorAnswer(WireError.STOPPING, "the server is stopping; the operation had no effect")
+                    : new ErrorAnswer(WireError.CANCELLED, "the call was cancelled; it had no effect");
         }
     }
 
@@ -165,63 +253,112 @@ final class SpaceOperations {
      * taking the next request) must never be refused for that. Only an operation that would have to wait is told
      * to come back ({@code busy}).
      */
-    private boolean tryOnceOrBusy(Operation operation, RequestFields in, WireWriter out) {
-        try {
-            return waiting(operation, in, Timeout.TRY_ONCE, 0, out);
-        } catch (SpaceTimeoutException mustWait) {
-            throw new ErrorAnswer(WireError.BUSY, "too many operations are waiting on this server; try again");
-        }
+    private void tryOnceOrBusy(Operation operation, RequestFields in, Exchange exchange, Step step) {
+        waitFor(operation, in, Timeout.TRY_ONCE, 0, exchange, new Step() {
+            @Override
+            public void done(Object result) {
+                step.done(result);
+            }
+
+            @Override
+            public void failed(RuntimeException failure) {
+                step.failed(failure instanceof SpaceTimeoutException
+                        ? new ErrorAnswer(WireError.BUSY, "too many operations are waiting on this server; try again")
+                        : failure);
+            }
+        });
     }
 
     /**
-     * A write (or shift), then a take (from the same or another container) by the same thread: the two operations
-     * one after the other, as if sent as two requests, but in one exchange, so a caller that waits for an answer to
-     * what it writes has its take registered without a second round trip. Each operation is atomic on its own; the pair
-     * is not (others may act between them). Both waits together stay within the server's maximum wait: if the
-     * write cannot happen in it, the answer is {@code "more"} (nothing happened); once it has happened, the answer
-     * says {@code "written": true}, also with {@code "more"} (the take's wait ran out: ask again with a plain take)
-     * and with an error (the take failed; the write stays done).
+     * A write (or shift), then a take (from the same or another container): the two operations one after the
+     * other, as if sent as two requests, but in one exchange, so a caller that waits for an answer to what it writes
+     * has its take registered without a second round trip. Each operation is atomic on its own; the pair is not
+     * (others may act between them). Both waits together stay within the server's maximum wait: if the write cannot
+     * happen in it, the answer is {@code "more"} (nothing happened); once it has happened, the answer says
+     * {@code "written": true}, also with {@code "more"} (the take's wait ran out: ask again with a plain take) and
+     * with an error (the take failed; the write stays done).
      */
-    private void putThenTake(boolean shift, RequestFields in, WireWriter out) {
+    private void putThenTake(boolean shift, RequestFields in, Exchange exchange) {
         long started = System.nanoTime();
         RequestFields take = in.required(in.take, "take");
         take.required(take.container, "take.container");
         Timeout requested = in.required(in.timeout, "timeout");
         long maxWait = state.options.maxWaitMillis();
-        if (shift) {
-            shift(in, out); // never waits
-        } else if (!waiting(Operation.WRITE, in, requested, maxWait, out)) {
-            return; // "more": the write did not happen
-        }
-        out.field("written", true);
-        long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
-        Timeout left = requested.isInfinite() || requested.isTryOnce() ? requested
-                : Timeout.ofMillis(Math.max(0, requested.millis() - elapsed));
-        try {
-            waiting(Operation.TAKE, take, left, Math.max(0, maxWait - elapsed), out);
-        } catch (ErrorAnswer e) {
-            throw new ErrorAnswer(e.error, e.getMessage(), true);
-        } catch (RuntimeException e) {
-            throw new ErrorAnswer(WireError.of(e), e.getMessage() == null ? e.toString() : e.getMessage(), true);
-        }
-    }
-
-    private void finishQuietly(CallRegistry.InFlight call) {
-        if (call != null) {
-            state.calls.finish(call);
-            state.calls.done(call, false);
-        }
-    }
-
-    private Object execute(Operation operation, ContainerRef container, Timeout wait, RequestFields in) {
-        return switch (operation) {
-            case READ -> state.space.read(container, wait, in.selectors);
-            case TAKE, DESTROY -> state.space.removeWithReceipt(container, operation, wait, in.selectors);
-            case WRITE -> {
-                state.space.write(container, wait, in.items);
-                letWokenCallsRunFirst();
-                yield Boolean.TRUE;
+        Exchange.Body body = exchange.body();
+        Step takeStep = new Step() {
+            @Override
+            public void done(Object result) {
+                if (result == MORE) {
+                    body.out.field("more", true);
+                } else {
+                    answer(Operation.TAKE, result, take.call, body.out);
+                }
+                exchange.answer(body);
             }
+
+            @Override
+            public void failed(RuntimeException e) {
+                if (e instanceof ErrorAnswer answer) {
+                    exchange.fail(answer.error, answer.getMessage(), true);
+                } else {
+                    exchange.fail(WireError.of(e), e.getMessage() == null ? e.toString() : e.getMessage(), true);
+                }
+            }
+        };
+        Runnable thenTake = () -> {
+            body.out.field("written", true);
+            long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
+            Timeout left = requested.isInfinite() || requested.isTryOnce() ? requested
+                    : Timeout.ofMillis(Math.max(0, requested.millis() - elapsed));
+            try {
+                waitFor(Operation.TAKE, take, left, Math.max(0, maxWait - elapsed), exchange, takeStep);
+            } catch (RuntimeException e) {
+                takeStep.failed(e);
+            }
+        };
+        if (shift) {
+            shift(in, body.out); // never waits
+            thenTake.run();
+            return;
+        }
+        waitFor(Operation.WRITE, in, requested, maxWait, exchange, new Step() {
+            @Override
+            public void done(Object result) {
+                if (result == MORE) {
+                    body.out.field("more", true); // the write did not happen
+                    exchange.answer(body);
+                } else {
+                    thenTake.run();
+                }
+            }
+
+            @Override
+            public void failed(RuntimeException failure) {
+                exchange.fail(failure);
+            }
+        });
+    }
+
+    /** Starts an operation in the space; its outcome goes to {@code done} (a write completes with TRUE). */
+    @SuppressWarnings("unchecked")
+    private SpaceEngine.Pending start(Operation operation, ContainerRef container, Timeout wait, RequestFields in,
+                                      SpaceEngine.Completion<Object> done) {
+        return switch (operation) {
+            case READ -> state.space.readLater(container, wait, in.selectors,
+                    (SpaceEngine.Completion<List<Entry>>) (SpaceEngine.Completion<?>) done);
+            case TAKE, DESTROY -> state.space.removeLater(container, operation, wait, in.selectors,
+                    (SpaceEngine.Completion<Removal>) (SpaceEngine.Completion<?>) done);
+            case WRITE -> state.space.writeLater(container, wait, in.items, new SpaceEngine.Completion<>() {
+                @Override
+                public void completed(Void nothing) {
+                    done.completed(Boolean.TRUE);
+                }
+
+                @Override
+                public void failed(SpaceException failure) {
+                    done.failed(failure);
+                }
+            });
             default -> throw new IllegalStateException(operation.toString());
         };
     }
@@ -251,12 +388,12 @@ final class SpaceOperations {
         if (in.call != null && state.calls.isForbidden(in.call)) {
             throw new ErrorAnswer(WireError.CANCELLED, "call " + in.call + " was cancelled");
         }
+        // the calls this shift completes are answered on this thread, inside the shift, before this answer
         List<Entry> displaced = state.space.shift(in.required(in.container, "container"),
                 in.required(in.timeout, "timeout"), in.required(in.items, "items"));
         if (in.call != null) {
             state.receipts.completed(in.call, displaced); // a client whose answer is lost can ask
         }
-        letWokenCallsRunFirst();
         out.entries("displaced", displaced);
     }
 

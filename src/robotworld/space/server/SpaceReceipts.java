@@ -10,7 +10,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 
-import robotworld.space.EmbeddedSpace;
+import robotworld.space.SpaceEngine;
 import robotworld.space.Entry;
 
 /**
@@ -24,7 +24,7 @@ import robotworld.space.Entry;
 final class SpaceReceipts {
 
     private static final int MAX_COMPLETED = 10_000;
-    private static final Map<EmbeddedSpace, SpaceReceipts> BY_SPACE = new WeakHashMap<>();
+    private static final Map<SpaceEngine, SpaceReceipts> BY_SPACE = new WeakHashMap<>();
     private static final ScheduledExecutorService TIMER = Executors.newSingleThreadScheduledExecutor(task -> {
         Thread thread = new Thread(task, "space-server-leases");
         thread.setDaemon(true);
@@ -39,7 +39,7 @@ final class SpaceReceipts {
     }
 
     /** The receipts of {@code space}, created on first use; expired leases are checked every few milliseconds. */
-    static SpaceReceipts of(EmbeddedSpace space) {
+    static SpaceReceipts of(SpaceEngine space) {
         synchronized (BY_SPACE) {
             SpaceReceipts receipts = BY_SPACE.get(space);
             if (receipts == null) {

@@ -19,6 +19,7 @@ import org.eclipse.jetty.server.handler.EagerContentHandler;
 import org.eclipse.jetty.util.thread.QueuedThreadPool;
 import robotworld.core.HostNames;
 import robotworld.space.EmbeddedSpace;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
 import robotworld.space.wire.CrefMapping;
 import robotworld.space.wire.WireContext;
@@ -41,6 +42,9 @@ import robotworld.space.wire.WireLimits;
  * carry on without losing a notification. See {@code docs/wire.md}.
  */
 public final class SpaceServer implements AutoCloseable {
+
+    /** Threads for requests being worked on at once (waiting ones hold none), besides the notification streams. */
+    private static final int MAX_BUSY_THREADS = 200;
 
     private final Server jetty;
     private final ServerState state;
@@ -67,12 +71,15 @@ public final class SpaceServer implements AutoCloseable {
      * Starts a server in front of an existing space, which stays open when the server stops (so a server can be
      * restarted in front of it). Crefs of the space are translated to the server's URI on the wire.
      */
-    public static SpaceServer start(EmbeddedSpace space, Options options) {
+    public static SpaceServer start(SpaceEngine space, Options options) {
         if (options.token() != null) {
             new BearerToken(options.token()); // reject an unusable token before binding anything
         }
-        QueuedThreadPool threads = new QueuedThreadPool(options.maxWaitingCalls() + options.maxSessions() + 32, 4);
+        // waiting calls hold no thread: the threads run requests that are being worked on, plus one per
+        // notification stream
+        QueuedThreadPool threads = new QueuedThreadPool(options.maxSessions() + MAX_BUSY_THREADS, 4);
         threads.setName("space-server");
+        threads.setIdleTimeout(10_000); // threads started for a burst of work end soon after it
         threads.setDaemon(true);
         Server jetty = new Server(threads);
         HttpConfiguration http = new HttpConfiguration();
@@ -95,7 +102,7 @@ public final class SpaceServer implements AutoCloseable {
         URI publicUri = options.publicUri() != null ? options.publicUri()
                 : URI.create("http://" + uriHost(options.bindAddress()) + ":" + port + options.path());
         boolean ownsSpace = space == null;
-        EmbeddedSpace served = ownsSpace ? EmbeddedSpace.open(publicUri, options.notificationQueue()) : space;
+        SpaceEngine served = ownsSpace ? EmbeddedSpace.open(publicUri, options.notificationQueue()) : space;
         WireContext wire = WireContext.of(options.limits(), CrefMapping.between(served.spaceUri(), publicUri));
         ServerState state = new ServerState(served, publicUri, wire, options);
         if (!ownsSpace) {
@@ -108,8 +115,8 @@ public final class SpaceServer implements AutoCloseable {
         context.setErrorHandler(new JsonErrorHandler(wire));
         // a request's body is read without holding a thread, and the servlet runs once it is all there: clients
         // that send slowly (a bad link, or on purpose) cannot take the threads that others' calls need
-        jetty.setHandler(new EagerContentHandler(context, new EagerContentHandler.RetainedContentLoaderFactory(
-                options.limits().maxBodyBytes() + 1L, -1, false)));
+        jetty.setHandler(new EagerContentHandler(new OperationsHandler(state, context),
+                new EagerContentHandler.RetainedContentLoaderFactory(options.limits().maxBodyBytes() + 1L, -1, false)));
         jetty.setErrorHandler(new JsonErrorHandler(wire));
         jetty.addBean(new NetworkConnectionLimit(options.maxConnections(), connector));
         jetty.setStopTimeout(options.stopGraceMillis());
@@ -160,7 +167,7 @@ public final class SpaceServer implements AutoCloseable {
     }
 
     /** The space this server exposes. */
-    public EmbeddedSpace space() {
+    public SpaceEngine space() {
         return state.space;
     }
 

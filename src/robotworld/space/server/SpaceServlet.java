@@ -20,23 +20,20 @@ import robotworld.space.wire.WireReader;
 import robotworld.space.wire.WireWriter;
 
 /**
- * The HTTP face of a space: {@code GET <path>} describes the server, {@code POST <path>/<operation>} runs an
- * operation (JSON in, JSON out), {@code GET <path>/events?session=ID} streams notifications. Every request is
- * authenticated (when a token is set), size-checked before its body is read, and parsed strictly; every failure
- * is a JSON error answer with a 4xx or 5xx status. See {@code docs/wire.md}.
+ * The HTTP face of a space besides its operations ({@link OperationsHandler}): {@code GET <path>} describes the
+ * server, {@code GET <path>/events?session=ID} streams notifications (one thread per stream, bounded by the
+ * number of sessions). Every request is authenticated (when a token is set); every failure is a JSON error answer
+ * with a 4xx or 5xx status. See {@code docs/wire.md}.
  */
 final class SpaceServlet extends HttpServlet {
 
     private static final System.Logger LOG = System.getLogger(SpaceServlet.class.getName());
-    private static final int MAX_ACKS_PER_REQUEST = 1024;
     private static final int MAX_MESSAGE_CHARS = 300;
 
     private final transient ServerState state;
-    private final transient SpaceOperations operations;
 
     SpaceServlet(ServerState state) {
         this.state = state;
-        this.operations = new SpaceOperations(state);
     }
 
     @Override
@@ -54,8 +51,7 @@ final class SpaceServlet extends HttpServlet {
                 requireMethod(request, response, "GET");
                 events(request, response);
             } else {
-                requireMethod(request, response, "POST");
-                operation(path.substring(1), request, response);
+                throw new ErrorAnswer(WireError.NO_SUCH_ENDPOINT, "no such path"); // operations: OperationsHandler
             }
         } catch (ErrorAnswer e) {
             error(response, e.error, e.getMessage(), e.written);
@@ -96,77 +92,6 @@ final class SpaceServlet extends HttpServlet {
                     .endObject();
         }
         send(response, 200, body);
-    }
-
-    // ---- POST <path>/<operation> ----
-
-    private void operation(String name, HttpServletRequest request, HttpServletResponse response) throws IOException {
-        if (!isJson(request.getContentType())) {
-            throw new ErrorAnswer(WireError.UNSUPPORTED_MEDIA_TYPE, "send the body as " + Wire.MEDIA_TYPE);
-        }
-        byte[] body = readBody(request);
-        acknowledge(request.getHeader(Wire.ACK_HEADER));
-        if (state.stopping && !name.equals("ack") && !name.equals("cancel")) {
-            throw new ErrorAnswer(WireError.STOPPING, "the server is stopping; the operation had no effect");
-        }
-        RequestFields fields;
-        try (WireReader in = state.wire.reader(body, 0, body.length)) {
-            fields = RequestFields.parse(in, MAX_ACKS_PER_REQUEST);
-        }
-        ByteArrayOutputStream answer = new ByteArrayOutputStream(128);
-        try (WireWriter out = state.wire.writer(answer)) {
-            out.startObject();
-            if (!operations.run(name, fields, out)) {
-                throw new ErrorAnswer(WireError.NO_SUCH_ENDPOINT, "no operation '" + truncate(name) + "'");
-            }
-            out.endObject();
-        }
-        send(response, 200, answer);
-    }
-
-    private static boolean isJson(String contentType) {
-        if (contentType == null) {
-            return false;
-        }
-        int semicolon = contentType.indexOf(';');
-        String type = (semicolon < 0 ? contentType : contentType.substring(0, semicolon)).trim();
-        return type.equalsIgnoreCase(Wire.MEDIA_TYPE);
-    }
-
-    /** Reads the body, refusing anything over the limit before allocating for it. */
-    private byte[] readBody(HttpServletRequest request) throws IOException {
-        int max = state.wire.limits().maxBodyBytes();
-        long declared = request.getContentLengthLong();
-        if (declared > max) {
-            throw new ErrorAnswer(WireError.TOO_LARGE, "the body has " + declared + " bytes; at most " + max);
-        }
-        InputStream in = request.getInputStream();
-        if (declared >= 0) {
-            byte[] body = in.readNBytes((int) declared);
-            if (body.length < declared) {
-                throw new ErrorAnswer(WireError.BAD_REQUEST, "the body is shorter than its Content-Length");
-            }
-            return body;
-        }
-        byte[] body = in.readNBytes(max + 1); // chunked: read at most one byte past the limit
-        if (body.length > max) {
-            throw new ErrorAnswer(WireError.TOO_LARGE, "the body has more than " + max + " bytes");
-        }
-        return body;
-    }
-
-    /** Acknowledgements of earlier takes ride on any request, as a header of comma-separated call ids. */
-    private void acknowledge(String header) {
-        if (header == null || header.isEmpty()) {
-            return;
-        }
-        int count = 0;
-        for (String id : header.split(",")) {
-            if (++count > MAX_ACKS_PER_REQUEST) {
-                throw new ErrorAnswer(WireError.BAD_REQUEST, "more than " + MAX_ACKS_PER_REQUEST + " acks in one request");
-            }
-            state.leases.acknowledge(RequestFields.id(id.trim(), Wire.ACK_HEADER));
-        }
     }
 
     // ---- GET <path>/events ----
