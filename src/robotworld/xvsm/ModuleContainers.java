@@ -90,6 +90,12 @@ final class ModuleContainers {
         }
     }
 
+    /** Looks both containers up (or creates them) again: after one has gone, e.g. a server that came back empty. */
+    void lookUpAgain() {
+        requests = space.lookupOrCreateContainer(requestSpec);
+        answers = space.lookupOrCreateContainer(answerSpec);
+    }
+
     /** Runs {@code operation} on the ANSWER container, once more on a fresh one if it has gone. */
     <T> T onAnswers(Function<ContainerRef, T> operation) {
         try {

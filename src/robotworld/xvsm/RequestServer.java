@@ -2,28 +2,37 @@ package robotworld.xvsm;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.function.Function;
-import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robotworld.space.AsyncTakes;
 import robotworld.space.Capi;
+import robotworld.space.ContainerNotFoundException;
 import robotworld.space.Entry;
 import robotworld.space.Item;
 import robotworld.space.Selector;
 import robotworld.space.SpaceClosedException;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
-import robotworld.space.SpaceInterruptedException;
 import robotworld.space.Timeout;
 
 /**
- * The thread that serves one module's REQUEST container: a blocking take (or, with adaptive batching, first a
- * take of everything waiting), then the answers from the module, shifted into ANSWER under each requester's key
- * in one operation. Space failures are retried with a growing pause; the loop only ends on {@link #stop}, or
- * when the space is closed.
+ * Serves one module's REQUEST container, event-driven: while no request is there, the module waits in the space
+ * without a thread (a take that completes later, {@link AsyncTakes}); when requests arrive, a thread of the
+ * runtime's small {@link ServingThreads serving pool} answers them from the module (or, with adaptive batching,
+ * first takes everything waiting), shifts the answers into ANSWER under each requester's key, and starts waiting
+ * for the next request in the same exchange ({@link AsyncTakes#shiftThenTakeLater}). So a program serving a
+ * thousand modules has a few threads, not a thousand, and the threads it has are the ones doing hardware calls.
  *
- * <p>Stopping is clean: the thread is interrupted only while it waits (for requests, or in a pause), so a
- * request it has taken is always answered before it ends.
+ * <p>Space failures are retried with a growing pause; serving only ends on {@link #stop}, or when the space is
+ * closed. Stopping is clean: a waiting take is withdrawn (nothing it took is lost), and a request that was taken is
+ * always answered before the server ends.
+ *
+ * <p>A space connection that cannot wait without a thread (another {@link Capi}) is served the same way, with
+ * the take waiting on a thread of its own.
  */
 final class RequestServer {
 
@@ -32,25 +41,27 @@ final class RequestServer {
     private static final long FIRST_PAUSE_MILLIS = 20;
     private static final long LONGEST_PAUSE_MILLIS = 2_000;
     private static final long JOIN_MILLIS = 10_000;
-
-    /** Thrown inside the loop when it is to stop. */
-    private static final class Stop extends Exception {
-        Stop() {
-            super(null, null, false, false);
-        }
-    }
+    private static final Selector[] NEXT_REQUEST = new Selector[0];
 
     private final ModuleContainers containers;
     private final String name;
     private final Function<List<CallTuple>, List<CallTuple>> answerer;
     private final BooleanSupplier batching;
+    private final AsyncTakes takes;
     private final Object lock = new Object();
-    private Thread thread;
+    private final CountDownLatch ended = new CountDownLatch(1);
+    /** The take waiting in the space, or null while requests are worked on (or before start). */
+    private SpaceEngine.Pending pending;
+    private boolean started;
     private boolean stopping;
-    private boolean waiting;
+    private volatile boolean over;
+    /** The thread working on requests right now, if any. */
+    private volatile Thread worker;
+    /** The current pause after space failures (0 while serving normally); serving thread only. */
+    private long pause;
 
     /**
-     * @param name     participant/module, for the thread's name and log messages
+     * @param name     participant/module, for log messages
      * @param answerer the answers to a batch of requests, one per request in order; never throws
      * @param batching whether to take all waiting requests at once
      */
@@ -60,126 +71,211 @@ final class RequestServer {
         this.name = name;
         this.answerer = answerer;
         this.batching = batching;
+        this.takes = containers.space() instanceof AsyncTakes async ? async : new ThreadPerTake(containers.space());
     }
 
     void start() {
         synchronized (lock) {
-            if (thread != null || stopping) {
+            if (started || stopping) {
                 throw new IllegalStateException("the request server of " + name + " was already started");
             }
-            thread = new Thread(this::run, "xvsm-serve " + name);
-            thread.setDaemon(true);
-            // the loop catches every exception; an Error (out of memory, say) must still not pass unseen
-            thread.setUncaughtExceptionHandler((dead, error) -> LOG.error("{}: the serving thread died; the module is"
-                    + " no longer served", name, error));
-            thread.start();
+            started = true;
         }
+        ServingThreads.execute(() -> serve(null));
     }
 
-    /** Whether the serving thread is alive. */
+    /** Whether the module is served: started, not stopped, and not ended by a fatal error. */
     boolean isRunning() {
         synchronized (lock) {
-            return thread != null && thread.isAlive();
+            return started && !over;
         }
     }
 
-    /** Stops the loop, waits for the thread to end (after answering what it has taken); idempotent. */
+    /** Stops serving, waits until requests already taken are answered (at most 10 s); idempotent. */
     void stop() {
-        Thread serving;
+        SpaceEngine.Pending waiting;
         synchronized (lock) {
-            stopping = true;
-            serving = thread;
-            if (serving != null && waiting) {
-                serving.interrupt();
-            }
-        }
-        if (serving == null || serving == Thread.currentThread()) {
-            return;
-        }
-        try {
-            serving.join(JOIN_MILLIS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        if (serving.isAlive()) {
-            LOG.warn("{}: the serving thread is still busy with the hardware after {} ms; leaving it", name,
-                    JOIN_MILLIS);
-        }
-    }
-
-    private void run() {
-        long pause = 0;
-        List<CallTuple> taken = null; // requests taken together with the previous answers
-        while (true) {
-            try {
-                List<CallTuple> requests = taken != null ? taken : nextRequests();
-                taken = null;
-                if (pause > 0) {
-                    LOG.info("{}: serving again", name);
-                    pause = 0;
-                }
-                if (!requests.isEmpty()) {
-                    taken = answer(requests);
-                }
-            } catch (Stop | SpaceClosedException end) {
-                return;
-            } catch (RuntimeException e) {
-                // the space failed or is unreachable, or anything else went wrong: this thread is the module's
-                // only server, so it never ends for that; it tries again, more slowly, and says so once
-                taken = null;
-                if (pause == 0) {
-                    LOG.warn("{}: cannot serve requests ({}); trying again with growing pauses up to {} ms", name,
-                            e.toString(), LONGEST_PAUSE_MILLIS);
-                } else {
-                    LOG.debug("{}: still cannot serve requests ({})", name, e.toString());
-                }
-                pause = pause == 0 ? FIRST_PAUSE_MILLIS : Math.min(LONGEST_PAUSE_MILLIS, pause * 2);
-                try {
-                    pause(pause);
-                } catch (Stop stop) {
+            if (stopping) {
+                waiting = null;
+            } else {
+                stopping = true;
+                waiting = pending;
+                pending = null;
+                if (!started) {
+                    end();
                     return;
                 }
             }
         }
+        if (waiting != null && waiting.cancel()) {
+            end(); // the take was withdrawn: nothing was taken, nothing to answer
+            return;
+        }
+        if (worker == Thread.currentThread()) {
+            return; // called from this module's own work: it ends when that returns
+        }
+        try {
+            if (!ended.await(JOIN_MILLIS, TimeUnit.MILLISECONDS)) {
+                LOG.warn("{}: still busy with the hardware after {} ms; leaving it", name, JOIN_MILLIS);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
-    private List<CallTuple> nextRequests() throws Stop {
-        Capi space = containers.space();
-        if (batching.getAsBoolean()) {
-            checkStopping();
-            List<Entry> waitingNow = containers.onRequests(requests -> space.take(requests, Timeout.TRY_ONCE,
-                    Selector.fifo(Selector.ALL)));
-            if (!waitingNow.isEmpty()) {
-                return parse(waitingNow);
-            }
-        }
-        return parse(whileWaiting(() -> containers.onRequests(requests -> space.take(requests, Timeout.INFINITE))));
+    private void end() {
+        over = true;
+        ended.countDown();
     }
 
     /**
-     * Delivers the answers to {@code requests}. Without batching, the same exchange with the space then waits for
-     * the next request ({@link Capi#shiftThenTake}), which saves a round trip per request.
-     *
-     * @return the next requests, taken with the answers; null if they are still to be taken
+     * Starts waiting for the next requests, delivering {@code answers} first (in the same exchange unless batching).
+     * On a serving thread.
      */
-    private List<CallTuple> answer(List<CallTuple> requests) {
-        List<CallTuple> answers = answerer.apply(requests);
-        List<Item> items = new ArrayList<>(answers.size());
-        for (CallTuple answer : answers) {
-            items.add(Item.keyed(answer.key(), answer.toTuple()));
+    private void serve(List<Item> answers) {
+        List<Item> undelivered = answers;
+        try {
+            if (isStopping()) {
+                if (answers != null) {
+                    shift(answers);
+                }
+                end();
+                return;
+            }
+            if (batching.getAsBoolean()) {
+                if (answers != null) {
+                    shift(answers);
+                    undelivered = null;
+                }
+                List<Entry> waitingNow = containers.onRequests(requests -> containers.space().take(requests,
+                        Timeout.TRY_ONCE, Selector.fifo(Selector.ALL)));
+                if (!waitingNow.isEmpty()) {
+                    work(waitingNow);
+                    return;
+                }
+                await(null);
+            } else {
+                await(answers);
+            }
+        } catch (SpaceClosedException closed) {
+            end();
+        } catch (RuntimeException e) {
+            failed(e, undelivered);
         }
-        if (!batching.getAsBoolean()) {
-            try {
-                return parse(whileWaiting(() -> containers.space().shiftThenTake(containers.answers(), items,
-                        containers.requests(), Timeout.INFINITE)));
-            } catch (Stop | SpaceException e) {
-                // stopping, or the space failed: whether the answers were delivered is unknown, so they are
-                // delivered (again) below. Under the same keys that is harmless: a second shift displaces the first,
-                // or leaves an answer its caller already has, which nobody takes.
+    }
+
+    /** Starts the take (after a shift of {@code answers}, if any) that completes when a request arrives. */
+    private void await(List<Item> answers) {
+        Completion completion = new Completion(answers);
+        SpaceEngine.Pending take = answers == null
+                ? takes.takeLater(containers.requests(), Timeout.INFINITE, NEXT_REQUEST, completion)
+                : takes.shiftThenTakeLater(containers.answers(), answers, containers.requests(), Timeout.INFINITE,
+                        NEXT_REQUEST, completion);
+        boolean withdraw;
+        synchronized (lock) {
+            withdraw = stopping && !completion.fired;
+            if (!withdraw && !completion.fired) {
+                pending = take;
             }
         }
-        shift(items);
-        return null;
+        if (withdraw && take.cancel()) {
+            end();
+        }
+    }
+
+    /** Where the waiting take's outcome goes: straight on to a serving thread. */
+    private final class Completion implements SpaceEngine.Completion<List<Entry>> {
+        /** The answers shifted along with the take (their delivery is unknown if it fails). */
+        private final List<Item> answers;
+        /** Guarded by the server's lock. */
+        boolean fired;
+
+        Completion(List<Item> answers) {
+            this.answers = answers;
+        }
+
+        private void fired() {
+            synchronized (lock) {
+                fired = true;
+                pending = null;
+            }
+        }
+
+        @Override
+        public void completed(List<Entry> entries) {
+            fired();
+            ServingThreads.execute(() -> work(entries));
+        }
+
+        @Override
+        public void failed(SpaceException failure) {
+            fired();
+            ServingThreads.execute(() -> RequestServer.this.failed(failure, answers));
+        }
+    }
+
+    /** Answers what was taken and goes on waiting. On a serving thread. */
+    private void work(List<Entry> entries) {
+        worker = Thread.currentThread();
+        List<Item> items;
+        try {
+            if (pause > 0) {
+                LOG.info("{}: serving again", name);
+                pause = 0;
+            }
+            List<CallTuple> requests = parse(entries);
+            List<CallTuple> answers = requests.isEmpty() ? List.of() : answerer.apply(requests);
+            items = new ArrayList<>(answers.size());
+            for (CallTuple answer : answers) {
+                items.add(Item.keyed(answer.key(), answer.toTuple()));
+            }
+        } catch (VirtualMachineError fatal) {
+            LOG.error("{}: serving failed for good; the module is no longer served", name, fatal);
+            end();
+            throw fatal;
+        } finally {
+            worker = null;
+        }
+        serve(items.isEmpty() ? null : items);
+    }
+
+    /**
+     * The space failed or is unreachable: this is the module's only server, so it never gives up for that; it tries
+     * again, more slowly, and says so once. Answers whose delivery is unknown are delivered (again): under the same
+     * keys that is harmless (a second shift displaces the first, or leaves an answer its caller already has).
+     */
+    private void failed(RuntimeException failure, List<Item> undelivered) {
+        if (failure instanceof SpaceClosedException || isStopping() && failure instanceof SpaceException) {
+            if (undelivered != null) {
+                shift(undelivered);
+            }
+            end();
+            return;
+        }
+        if (failure instanceof ContainerNotFoundException) {
+            try {
+                containers.lookUpAgain(); // destroyed, or a server that came back empty
+            } catch (RuntimeException stillDown) {
+                // tried again after the pause
+            }
+        }
+        if (undelivered != null) {
+            shift(undelivered);
+        }
+        if (pause == 0) {
+            LOG.warn("{}: cannot serve requests ({}); trying again with growing pauses up to {} ms", name,
+                    failure.toString(), LONGEST_PAUSE_MILLIS);
+        } else {
+            LOG.debug("{}: still cannot serve requests ({})", name, failure.toString());
+        }
+        pause = pause == 0 ? FIRST_PAUSE_MILLIS : Math.min(LONGEST_PAUSE_MILLIS, pause * 2);
+        ServingThreads.schedule(() -> serve(null), pause);
+    }
+
+    private boolean isStopping() {
+        synchronized (lock) {
+            return stopping;
+        }
     }
 
     private void shift(List<Item> items) {
@@ -203,45 +299,65 @@ final class RequestServer {
         return requests;
     }
 
-    /** Runs a waiting operation that {@link #stop} may interrupt. */
-    private <T> T whileWaiting(Supplier<T> operation) throws Stop {
-        synchronized (lock) {
-            if (stopping) {
-                throw new Stop();
-            }
-            waiting = true;
-        }
-        try {
-            return operation.get();
-        } catch (SpaceInterruptedException e) {
-            checkStopping();
-            throw e;
-        } finally {
-            synchronized (lock) {
-                waiting = false;
-                // an interrupt from stop() that came just after the take succeeded: serve what was taken first
-                Thread.interrupted();
-            }
-        }
-    }
+    /**
+     * Waits without {@link AsyncTakes}: each take blocks a thread of its own, which a cancel interrupts. Only for
+     * space connections other than the embedded and the remote one.
+     */
+    private static final class ThreadPerTake implements AsyncTakes {
+        private final Capi space;
 
-    private void pause(long millis) throws Stop {
-        whileWaiting(() -> {
-            try {
-                Thread.sleep(millis);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new SpaceInterruptedException("pause interrupted", e);
-            }
-            return null;
-        });
-    }
+        ThreadPerTake(Capi space) {
+            this.space = space;
+        }
 
-    private void checkStopping() throws Stop {
-        synchronized (lock) {
-            if (stopping) {
-                throw new Stop();
-            }
+        @Override
+        public SpaceEngine.Pending takeLater(robotworld.space.ContainerRef container, Timeout timeout,
+                                             Selector[] selectors, SpaceEngine.Completion<List<Entry>> done) {
+            return run(() -> space.take(container, timeout, selectors), done);
+        }
+
+        @Override
+        public SpaceEngine.Pending shiftThenTakeLater(robotworld.space.ContainerRef shiftTo, List<Item> items,
+                                                      robotworld.space.ContainerRef takeFrom, Timeout timeout,
+                                                      Selector[] selectors,
+                                                      SpaceEngine.Completion<List<Entry>> done) {
+            return run(() -> space.shiftThenTake(shiftTo, items, takeFrom, timeout, selectors), done);
+        }
+
+        private static SpaceEngine.Pending run(java.util.function.Supplier<List<Entry>> take,
+                                               SpaceEngine.Completion<List<Entry>> done) {
+            java.util.concurrent.atomic.AtomicBoolean cancelling = new java.util.concurrent.atomic.AtomicBoolean();
+            java.util.concurrent.atomic.AtomicBoolean delivered = new java.util.concurrent.atomic.AtomicBoolean();
+            Thread thread = new Thread(() -> {
+                List<Entry> entries = null;
+                SpaceException failure = null;
+                try {
+                    entries = take.get();
+                } catch (SpaceException e) {
+                    failure = e;
+                }
+                if (cancelling.get() && failure instanceof robotworld.space.SpaceInterruptedException) {
+                    return; // withdrawn: an interrupted take had no effect
+                }
+                delivered.set(true); // a take that happened despite the cancel is delivered, never lost
+                if (failure != null) {
+                    done.failed(failure);
+                } else {
+                    done.completed(entries);
+                }
+            }, "xvsm-serve-take");
+            thread.setDaemon(true);
+            thread.start();
+            return () -> {
+                cancelling.set(true);
+                thread.interrupt();
+                try {
+                    thread.join(JOIN_MILLIS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                return !delivered.get();
+            };
         }
     }
 }
