@@ -28,7 +28,9 @@ import robotworld.space.Subscription;
 import robotworld.space.Timeout;
 import robotworld.space.Tuple;
 import robotworld.space.server.SpaceServer;
+import redis.clients.jedis.Jedis;
 import robotworld.testsupport.CpuPlacement;
+import robotworld.testsupport.RedisPeer;
 import robotworld.testsupport.TcpEcho;
 
 /**
@@ -47,6 +49,8 @@ public final class RemoteSpaceBenchmark {
     private static final int CLIENTS = Integer.getInteger("bench.clients", 50);
     private static final double TARGET_RATIO = 8.0;
     private static final long CONCURRENT_MILLIS = Long.getLong("bench.concurrentMillis", 3_000);
+    private static final int PAIRS = Integer.getInteger("bench.pairs", 50);
+    private static final long PAIR_MILLIS = Long.getLong("bench.pairMillis", 5_000);
 
     private RemoteSpaceBenchmark() {
     }
@@ -62,11 +66,12 @@ public final class RemoteSpaceBenchmark {
             }
         }
         try (SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0));
-             TcpEcho echo = new TcpEcho(16, 16)) {
+             TcpEcho echo = new TcpEcho(16, 16);
+             RedisPeer redis = RedisPeer.start()) {
             URI uri = server.uri();
             System.out.printf("%nLatency, %s:%n", CpuPlacement.describe());
             List<Row> rows = new ArrayList<>();
-            warmUp(uri, echo);
+            warmUp(uri, echo, redis);
             Row tcp = measure("raw TCP loopback round trip (16-byte echo)", echo, () -> tcpRoundTrips(echo));
             rows.add(tcp);
             rows.add(measure("remote write+take cycle (2 requests)", echo, () -> writeTakeCycles(uri)));
@@ -75,6 +80,11 @@ public final class RemoteSpaceBenchmark {
             Row call = measure("request/answer cycle of a remote module call (A 1, B 1)", echo,
                     () -> requestAnswerCycles(uri, true));
             rows.add(call);
+            Row redisCall = redis == null ? null : measure("Redis request/answer cycle (A: RPUSH+BLPOP; B: BLPOP, RPUSH)",
+                    echo, () -> redisCycles(redis));
+            if (redisCall != null) {
+                rows.add(redisCall);
+            }
             Row notification = measure("notification latency (write call to listener)", echo,
                     () -> notificationLatencies(uri));
             rows.add(notification);
@@ -87,8 +97,15 @@ public final class RemoteSpaceBenchmark {
                     CpuPlacement.describe(), call.ratio(), RUNS, TARGET_RATIO,
                     call.ratio() <= TARGET_RATIO ? "met" : "NOT met", notification.p50(),
                     notification.p50() <= 300 ? "met" : "NOT met");
+            if (redisCall != null) {
+                System.out.printf("%s: module-call cycle p50 = %.2f x the Redis cycle measured in the same run"
+                        + " (target <= 1: %s), %.1f x the TCP round trip (target <= 5: %s)%n", CpuPlacement.describe(),
+                        call.p50() / redisCall.p50(), call.p50() <= redisCall.p50() ? "met" : "NOT met", call.ratio(),
+                        call.ratio() <= 5 ? "met" : "NOT met");
+            }
             if (!latencyOnly) {
                 concurrentClients(uri);
+                concurrentPairs(uri, redis);
             }
         }
     }
@@ -165,6 +182,43 @@ public final class RemoteSpaceBenchmark {
             module.join();
             a.destroyContainer(requests);
             a.destroyContainer(answers);
+            return samples;
+        }
+    }
+
+    /**
+     * The same cycle with Redis and Jedis, as an engineer would write it there: A pushes its request onto a list
+     * and blocks popping its own answer list; B blocks popping the request list and pushes the answer onto A's.
+     */
+    private static long[] redisCycles(RedisPeer redis) throws Exception {
+        String suffix = Long.toString(System.nanoTime());
+        String requests = "req" + suffix;
+        String answers = "ans" + suffix + ":A";
+        try (Jedis a = redis.connect(); Jedis b = redis.connect()) {
+            Thread module = new Thread(() -> {
+                while (true) {
+                    String request = b.blpop(0, requests).get(1);
+                    if (request.isEmpty()) {
+                        return;
+                    }
+                    int colon = request.indexOf(':');
+                    b.rpush("ans" + suffix + ":" + request.substring(0, colon),
+                            Long.toString(Long.parseLong(request.substring(colon + 1)) + 1));
+                }
+            }, "bench-redis-module");
+            module.start();
+            long[] samples = new long[ROUND_TRIPS];
+            for (int i = 0; i < samples.length; i++) {
+                long start = System.nanoTime();
+                a.rpush(requests, "A:" + i);
+                String answer = a.blpop(5, answers).get(1);
+                samples[i] = System.nanoTime() - start;
+                if (Long.parseLong(answer) != i + 1) {
+                    throw new IllegalStateException("wrong Redis answer " + answer + " for " + i);
+                }
+            }
+            a.rpush(requests, "");
+            module.join();
             return samples;
         }
     }
@@ -298,6 +352,161 @@ public final class RemoteSpaceBenchmark {
         clients.forEach(Capi::close);
     }
 
+    /**
+     * {@link #PAIRS} request/answer pairs at once, each a caller and a module with containers (or Redis lists) of
+     * their own, doing the module-call cycle as fast as answers come; ours and Redis alternately, 3 runs each.
+     */
+    private static void concurrentPairs(URI uri, RedisPeer redis) throws Exception {
+        System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours and Redis"
+                + " alternately:%n", PAIRS, PAIR_MILLIS);
+        List<double[]> ours = new ArrayList<>();
+        List<double[]> theirs = new ArrayList<>();
+        for (int run = -1; run < 3; run++) { // run -1 warms up
+            double[] space = pairsRun(uri, null);
+            double[] redisRun = redis == null ? null : pairsRun(uri, redis);
+            if (run >= 0) {
+                ours.add(space);
+                System.out.printf("  run %d: space %,.0f calls/s, p50 %.0f us, p99 %.0f us", run + 1, space[0],
+                        space[1], space[2]);
+                if (redisRun != null) {
+                    theirs.add(redisRun);
+                    System.out.printf("; Redis %,.0f calls/s, p50 %.0f us, p99 %.0f us", redisRun[0], redisRun[1],
+                            redisRun[2]);
+                }
+                System.out.println();
+            }
+        }
+        double[] space = medians(ours);
+        System.out.printf("  median: space %,.0f calls/s, p50 %.0f us, p99 %.0f us%n", space[0], space[1], space[2]);
+        if (!theirs.isEmpty()) {
+            double[] r = medians(theirs);
+            System.out.printf("  median: Redis %,.0f calls/s, p50 %.0f us, p99 %.0f us%n", r[0], r[1], r[2]);
+            System.out.printf("  %d pairs: space %.2f x Redis calls/s (target >= 1: %s), p99 %.2f x Redis p99 (target"
+                    + " <= 1: %s)%n", PAIRS, space[0] / r[0], space[0] >= r[0] ? "met" : "NOT met", space[2] / r[2],
+                    space[2] <= r[2] ? "met" : "NOT met");
+        }
+    }
+
+    /** One run of {@link #PAIRS} pairs: {calls/s, p50 us, p99 us}; with Redis when {@code redis} is given. */
+    private static double[] pairsRun(URI uri, RedisPeer redis) throws Exception {
+        String suffix = Long.toString(System.nanoTime());
+        List<AutoCloseable> resources = new ArrayList<>();
+        long[][] perCaller = new long[PAIRS][];
+        CyclicBarrier start = new CyclicBarrier(PAIRS + 1);
+        CountDownLatch done = new CountDownLatch(PAIRS);
+        long[] stopAt = new long[1];
+        List<Thread> modules = new ArrayList<>();
+        try {
+            for (int p = 0; p < PAIRS; p++) {
+                int pair = p;
+                Runnable caller;
+                if (redis == null) {
+                    RemoteSpace a = RemoteSpace.open(uri);
+                    RemoteSpace b = RemoteSpace.open(uri);
+                    resources.add(a);
+                    resources.add(b);
+                    ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQ" + suffix + p));
+                    ContainerRef answers = a.createContainer(ContainerSpec.of(Order.LIFO).withKeyView()
+                            .named("ANS" + suffix + p));
+                    modules.add(new Thread(() -> {
+                        try {
+                            Tuple request = (Tuple) b.take(requests, Timeout.INFINITE).get(0);
+                            while (request.arity() != 0) {
+                                request = (Tuple) b.shiftThenTake(answers, List.of(Item.keyed(request.stringAt(0),
+                                        Tuple.of(request.longAt(1) + 1))), requests, Timeout.INFINITE).get(0);
+                            }
+                        } catch (RuntimeException closed) {
+                            // the run is over
+                        }
+                    }, "bench-pair-module-" + p));
+                    caller = () -> {
+                        long[] samples = new long[1 << 16];
+                        int count = 0;
+                        while (System.nanoTime() < stopAt[0] && count < samples.length) {
+                            long begin = System.nanoTime();
+                            Tuple answer = (Tuple) a.writeThenTake(requests, List.of(Item.of(Tuple.of("A", count))),
+                                    answers, Timeout.ofMillis(10_000), Selector.key("A")).get(0);
+                            if (answer.longAt(0) != count + 1) {
+                                throw new IllegalStateException("wrong answer " + answer);
+                            }
+                            samples[count++] = System.nanoTime() - begin;
+                        }
+                        a.write(requests, Timeout.TRY_ONCE, Tuple.of());
+                        perCaller[pair] = Arrays.copyOf(samples, count);
+                    };
+                } else {
+                    Jedis a = redis.connect();
+                    Jedis b = redis.connect();
+                    resources.add(a);
+                    resources.add(b);
+                    String requests = "req" + suffix + ":" + p;
+                    String answers = "ans" + suffix + ":" + p + ":A";
+                    modules.add(new Thread(() -> {
+                        while (true) {
+                            String request = b.blpop(0, requests).get(1);
+                            if (request.isEmpty()) {
+                                return;
+                            }
+                            b.rpush(answers, Long.toString(Long.parseLong(request) + 1));
+                        }
+                    }, "bench-pair-redis-" + p));
+                    caller = () -> {
+                        long[] samples = new long[1 << 16];
+                        int count = 0;
+                        while (System.nanoTime() < stopAt[0] && count < samples.length) {
+                            long begin = System.nanoTime();
+                            a.rpush(requests, Integer.toString(count));
+                            String answer = a.blpop(10, answers).get(1);
+                            if (Long.parseLong(answer) != count + 1) {
+                                throw new IllegalStateException("wrong Redis answer " + answer);
+                            }
+                            samples[count++] = System.nanoTime() - begin;
+                        }
+                        a.rpush(requests, "");
+                        perCaller[pair] = Arrays.copyOf(samples, count);
+                    };
+                }
+                Runnable body = caller;
+                Thread thread = new Thread(() -> {
+                    try {
+                        start.await();
+                        body.run();
+                    } catch (Exception e) {
+                        e.printStackTrace();
+                    } finally {
+                        done.countDown();
+                    }
+                }, "bench-pair-caller-" + p);
+                thread.start();
+            }
+            modules.forEach(Thread::start);
+            stopAt[0] = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PAIR_MILLIS);
+            long begin = System.nanoTime();
+            start.await();
+            done.await();
+            double seconds = (System.nanoTime() - begin) / 1e9;
+            for (Thread module : modules) {
+                module.join(5_000);
+            }
+            long[] all = Arrays.stream(perCaller).filter(x -> x != null).flatMapToLong(Arrays::stream).toArray();
+            Arrays.sort(all);
+            return new double[] {all.length / seconds, percentile(all, 0.50) / 1e3, percentile(all, 0.99) / 1e3};
+        } finally {
+            for (AutoCloseable resource : resources) {
+                resource.close();
+            }
+        }
+    }
+
+    private static double[] medians(List<double[]> runs) {
+        double[] result = new double[runs.get(0).length];
+        for (int i = 0; i < result.length; i++) {
+            int column = i;
+            result[i] = median(runs.stream().map(run -> run[column]).toList());
+        }
+        return result;
+    }
+
     // ---- measuring ----
 
     @FunctionalInterface
@@ -309,10 +518,13 @@ public final class RemoteSpaceBenchmark {
     private record Row(String name, double p50, double p99, double ratio, List<Double> runP50s, List<Double> tcpP50s) {
     }
 
-    private static void warmUp(URI uri, TcpEcho echo) throws Exception {
+    private static void warmUp(URI uri, TcpEcho echo, RedisPeer redis) throws Exception {
         long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.getLong("bench.warmupSeconds", 8));
         while (System.nanoTime() < until) {
             tcpRoundTrips(echo);
+            if (redis != null) {
+                redisCycles(redis);
+            }
             writeTakeCycles(uri);
             requestAnswerCycles(uri, false);
             requestAnswerCycles(uri, true);
