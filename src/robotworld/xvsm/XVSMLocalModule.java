@@ -13,8 +13,9 @@ import robotworld.safety.StopCause;
 import robotworld.space.Entry;
 
 /**
- * The module proxy on the computer that has the hardware. It serves the module's REQUEST container with a thread
- * of its own (blocking take, perform on the hardware, shift the answer under the requester's key), and lets the
+ * The module proxy on the computer that has the hardware. It serves the module's REQUEST container without a
+ * thread of its own (a take waiting in the space; then, on the program's serving pool, perform on the hardware and
+ * shift the answer under the requester's key; see {@link RequestServer}), and lets the
  * control program on this computer call the hardware directly; each such local call is published into the ANSWER
  * container under this computer's host name, so monitors see it (switch off with
  * {@link #setPublishLocalCalls(boolean)} to save the space traffic).

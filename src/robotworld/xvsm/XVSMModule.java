@@ -7,8 +7,8 @@ import robotworld.space.ContainerRef;
  * What every module proxy that shares a module through the space has (thesis table 2): the runtime with its
  * space connection, the host name of this computer, the module's participant and name, and the module's two
  * containers {@code <Participant><Module>REQUEST} and {@code <Participant><Module>ANSWER}, looked up or created
- * on construction. {@link XVSMLocalModule} serves the module on the computer that has the hardware, with a thread
- * of its own; {@link XVSMRemoteModule} calls it from anywhere else.
+ * on construction. {@link XVSMLocalModule} serves the module on the computer that has the hardware (waiting for
+ * requests without a thread); {@link XVSMRemoteModule} calls it from anywhere else.
  *
  * <p>A proxy registers itself with its runtime, so closing the runtime closes it.
  */

@@ -80,6 +80,8 @@ public final class RemoteSpaceBenchmark {
             Row call = measure("request/answer cycle of a remote module call (A 1, B 1)", echo,
                     () -> requestAnswerCycles(uri, true));
             rows.add(call);
+            rows.add(measure("module-call cycle, B waiting without a thread (shiftThenTakeLater)", echo,
+                    () -> threadlessModuleCycles(uri)));
             Row redisCall = redis == null ? null : measure("Redis request/answer cycle (A: RPUSH+BLPOP; B: BLPOP, RPUSH)",
                     echo, () -> redisCycles(redis));
             if (redisCall != null) {
@@ -183,6 +185,59 @@ public final class RemoteSpaceBenchmark {
             a.destroyContainer(requests);
             a.destroyContainer(answers);
             return samples;
+        }
+    }
+
+    /**
+     * The module-call cycle as a runtime's Local side serves it: B waits without a thread
+     * ({@link RemoteSpace#shiftThenTakeLater}); the request goes from B's I/O thread to a worker thread, which
+     * answers it and starts the next wait.
+     */
+    private static long[] threadlessModuleCycles(URI uri) throws Exception {
+        java.util.concurrent.ExecutorService worker = java.util.concurrent.Executors.newSingleThreadExecutor();
+        try (RemoteSpace a = RemoteSpace.open(uri); RemoteSpace b = RemoteSpace.open(uri)) {
+            String suffix = Long.toString(System.nanoTime());
+            ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQUEST" + suffix));
+            ContainerRef answers = a.createContainer(ContainerSpec.of(Order.LIFO).withKeyView().named("ANSWER" + suffix));
+            CountDownLatch over = new CountDownLatch(1);
+            robotworld.space.SpaceEngine.Completion<List<Entry>> serve = new robotworld.space.SpaceEngine.Completion<>() {
+                @Override
+                public void completed(List<Entry> entries) {
+                    worker.execute(() -> {
+                        Tuple request = (Tuple) entries.get(0);
+                        if (request.arity() == 0) {
+                            over.countDown();
+                            return;
+                        }
+                        b.shiftThenTakeLater(answers, List.of(Item.keyed(request.stringAt(0),
+                                Tuple.of(request.longAt(1) + 1))), requests, Timeout.INFINITE, new Selector[0], this);
+                    });
+                }
+
+                @Override
+                public void failed(robotworld.space.SpaceException failure) {
+                    failure.printStackTrace();
+                    over.countDown();
+                }
+            };
+            b.takeLater(requests, Timeout.INFINITE, new Selector[0], serve);
+            long[] samples = new long[ROUND_TRIPS];
+            for (int i = 0; i < samples.length; i++) {
+                long start = System.nanoTime();
+                Tuple answer = (Tuple) a.writeThenTake(requests, List.of(Item.of(Tuple.of("A", i))), answers,
+                        Timeout.ofMillis(5_000), Selector.key("A")).get(0);
+                samples[i] = System.nanoTime() - start;
+                if (answer.longAt(0) != i + 1) {
+                    throw new IllegalStateException("wrong answer " + answer + " for " + i);
+                }
+            }
+            a.write(requests, Timeout.TRY_ONCE, Tuple.of());
+            over.await(5, TimeUnit.SECONDS);
+            a.destroyContainer(requests);
+            a.destroyContainer(answers);
+            return samples;
+        } finally {
+            worker.shutdownNow();
         }
     }
 
@@ -528,6 +583,7 @@ public final class RemoteSpaceBenchmark {
             writeTakeCycles(uri);
             requestAnswerCycles(uri, false);
             requestAnswerCycles(uri, true);
+            threadlessModuleCycles(uri);
             notificationLatencies(uri);
         }
     }
