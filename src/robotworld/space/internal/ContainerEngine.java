@@ -1,8 +1,6 @@
 package robotworld.space.internal;
 
 import java.util.ArrayList;
-import java.util.Iterator;
-import java.util.LinkedList;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
@@ -48,7 +46,7 @@ public final class ContainerEngine {
     private final Delivery delivery;
     private final int queueCapacity;
     /** Oldest first. */
-    private final LinkedList<Waiter> waiters = new LinkedList<>();
+    private final WaiterQueue waiters = new WaiterQueue();
     /** Thread-less waiters served in the current critical section, whose completions run after it. */
     private List<Waiter> ready;
     private long sequence;
@@ -79,7 +77,8 @@ public final class ContainerEngine {
         Validation.checkSelectors(spec, selectors);
         boolean mutates = operation != Operation.READ;
         @SuppressWarnings("unchecked")
-        List<Entry> result = (List<Entry>) execute(timeout, mutates, () -> tryRetrieve(operation, selectors));
+        List<Entry> result = (List<Entry>) execute(timeout, mutates, () -> tryRetrieve(operation, selectors),
+                keyOf(selectors), List.of());
         return result;
     }
 
@@ -92,7 +91,7 @@ public final class ContainerEngine {
             throw new IllegalArgumentException("only take and destroy remove entries: " + operation);
         }
         Validation.checkSelectors(spec, selectors);
-        return (Removal) execute(timeout, true, () -> tryRemove(operation, selectors));
+        return (Removal) execute(timeout, true, () -> tryRemove(operation, selectors), keyOf(selectors), List.of());
     }
 
     public void write(Timeout timeout, List<Item> items) {
@@ -100,7 +99,7 @@ public final class ContainerEngine {
         if (items.isEmpty()) {
             return;
         }
-        execute(timeout, true, () -> tryWrite(items));
+        execute(timeout, true, () -> tryWrite(items), null, keysOf(items));
     }
 
     public List<Entry> shift(List<Item> items) {
@@ -109,7 +108,8 @@ public final class ContainerEngine {
             return List.of();
         }
         @SuppressWarnings("unchecked")
-        List<Entry> displaced = (List<Entry>) execute(Timeout.TRY_ONCE, true, () -> doShift(items));
+        List<Entry> displaced = (List<Entry>) execute(Timeout.TRY_ONCE, true, () -> doShift(items), null,
+                keysOf(items));
         return displaced;
     }
 
@@ -183,14 +183,20 @@ public final class ContainerEngine {
                 if (gone != null) {
                     return; // the entries went with their container
                 }
+                List<String> keys = new ArrayList<>(nodes.size());
+                for (Node node : nodes) {
+                    if (node.key != null) {
+                        keys.add(node.key);
+                    }
+                }
                 if (tryRestore(nodes)) {
                     if (!waiters.isEmpty()) {
-                        serveWaiters();
+                        serveWaiters(keys);
                     }
                 } else {
                     // nobody waits for this thread-less waiter: it is served first once the entries fit again
                     waiters.addFirst(new Waiter(() -> tryRestore(nodes) ? Boolean.TRUE : null, true,
-                            lock.newCondition()));
+                            lock.newCondition(), null, keys));
                 }
             } finally {
                 unlock();
@@ -238,21 +244,22 @@ public final class ContainerEngine {
 
     // ---- blocking ----
 
-    private Object execute(Timeout timeout, boolean mutates, Waiter.Attempt attempt) {
+    private Object execute(Timeout timeout, boolean mutates, Waiter.Attempt attempt, String key,
+                           List<String> adds) {
         lock.lock();
         try {
             failIfGone();
             Object result = attempt.tryOnce();
             if (result != null) {
                 if (mutates && !waiters.isEmpty()) {
-                    serveWaiters();
+                    serveWaiters(adds);
                 }
                 return result;
             }
             if (timeout.isTryOnce()) {
                 throw new SpaceTimeoutException("not possible at once on " + describe());
             }
-            Waiter waiter = new Waiter(attempt, mutates, lock.newCondition());
+            Waiter waiter = new Waiter(attempt, mutates, lock.newCondition(), key, adds);
             waiters.addLast(waiter);
             return await(waiter, timeout);
         } finally {
@@ -267,12 +274,13 @@ public final class ContainerEngine {
                                              SpaceEngine.Completion<Object> done) {
         Validation.checkSelectors(spec, selectors);
         if (operation == Operation.READ) {
-            return executeLater(timeout, false, () -> tryRetrieve(operation, selectors), done);
+            return executeLater(timeout, false, () -> tryRetrieve(operation, selectors), done, keyOf(selectors),
+                    List.of());
         }
         if (operation != Operation.TAKE && operation != Operation.DESTROY) {
             throw new IllegalArgumentException("not a retrieving operation: " + operation);
         }
-        return executeLater(timeout, true, () -> tryRemove(operation, selectors), done);
+        return executeLater(timeout, true, () -> tryRemove(operation, selectors), done, keyOf(selectors), List.of());
     }
 
     /** write that waits without a thread; completes with {@code Boolean.TRUE}. */
@@ -282,11 +290,11 @@ public final class ContainerEngine {
             done.completed(Boolean.TRUE);
             return SpaceEngine.Pending.DONE;
         }
-        return executeLater(timeout, true, () -> tryWrite(items), done);
+        return executeLater(timeout, true, () -> tryWrite(items), done, null, keysOf(items));
     }
 
     private SpaceEngine.Pending executeLater(Timeout timeout, boolean mutates, Waiter.Attempt attempt,
-                                             SpaceEngine.Completion<Object> done) {
+                                             SpaceEngine.Completion<Object> done, String key, List<String> adds) {
         Object result;
         SpaceException failure = null;
         lock.lock();
@@ -295,12 +303,12 @@ public final class ContainerEngine {
             result = attempt.tryOnce();
             if (result != null) {
                 if (mutates && !waiters.isEmpty()) {
-                    serveWaiters();
+                    serveWaiters(adds);
                 }
             } else if (timeout.isTryOnce()) {
                 failure = new SpaceTimeoutException("not possible at once on " + describe());
             } else {
-                Waiter waiter = new Waiter(attempt, mutates, null, done);
+                Waiter waiter = new Waiter(attempt, mutates, null, done, key, adds);
                 waiters.addLast(waiter);
                 if (!timeout.isInfinite()) {
                     waiter.expiry = delivery.timeout(() -> expire(waiter, timeout),
@@ -416,33 +424,61 @@ public final class ContainerEngine {
     }
 
     /**
-     * Retries blocked operations, oldest first. After one that changed the container succeeds, starts again
+     * Retries blocked operations, oldest first: those that any change may unblock, and those waiting for one of the
+     * keys that just received an entry ({@code keys}). After one that changed the container succeeds, starts again
      * from the oldest, since the change may have unblocked an operation that was skipped before.
      */
-    private void serveWaiters() {
+    private void serveWaiters(java.util.Collection<String> keys) {
+        java.util.Collection<String> touched = keys;
         boolean changed = true;
         while (changed && !waiters.isEmpty()) {
             changed = false;
-            for (Iterator<Waiter> it = waiters.iterator(); it.hasNext(); ) {
-                Waiter waiter = it.next();
+            for (Waiter waiter : waiters.candidates(touched)) {
                 Object result;
                 try {
                     result = waiter.attempt.tryOnce();
                 } catch (SpaceException e) {
-                    it.remove();
+                    waiters.remove(waiter);
                     complete(waiter, null, e);
                     continue;
                 }
                 if (result != null) {
-                    it.remove();
+                    waiters.remove(waiter);
                     complete(waiter, result, null);
                     if (waiter.mutates) {
+                        if (!waiter.adds.isEmpty()) {
+                            java.util.Set<String> more = new java.util.HashSet<>(touched);
+                            more.addAll(waiter.adds);
+                            touched = more;
+                        }
                         changed = true;
                         break;
                     }
                 }
             }
         }
+    }
+
+    /** The key of a selector chain that is exactly one key selector for one entry, else null. */
+    private static String keyOf(Selector[] selectors) {
+        if (selectors.length == 1 && selectors[0] instanceof Selector.Key key && key.count() == 1) {
+            return key.key();
+        }
+        return null;
+    }
+
+    /** The keys of the items that carry one. */
+    private static List<String> keysOf(List<Item> items) {
+        List<String> keys = null;
+        for (Item item : items) {
+            if (item.key() != null) {
+                if (keys == null) {
+                    keys = new ArrayList<>(items.size());
+                }
+                keys.add(item.key());
+            }
+        }
+        return keys == null ? List.of() : keys;
     }
 
     // ---- notifications ----
@@ -497,10 +533,9 @@ public final class ContainerEngine {
     }
 
     private void failWaiters(Supplier<? extends SpaceException> error) {
-        for (Waiter waiter : waiters) {
+        for (Waiter waiter : waiters.drain()) {
             complete(waiter, null, error.get());
         }
-        waiters.clear();
     }
 
     private void failIfGone() {

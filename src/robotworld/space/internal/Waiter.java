@@ -22,21 +22,30 @@ final class Waiter {
     final Condition wakeUp;
     /** Where the outcome goes when no thread waits; null for a waiting thread. */
     final SpaceEngine.Completion<Object> completion;
+    /** The key this waiter's only selector asks for (count 1), or null: then any change may unblock it. */
+    final String key;
+    /** The keys its success adds entries under (a write's keys), so that waiters for them are retried. */
+    final java.util.Collection<String> adds;
+    /** Its place in the queue: smaller is older. */
+    long seq;
     /** The timeout of a waiter without a thread, if it has one. */
     WaitTimer.Timeout expiry;
     Object result;
     SpaceException failure;
     boolean done;
 
-    Waiter(Attempt attempt, boolean mutates, Condition wakeUp) {
-        this(attempt, mutates, wakeUp, null);
+    Waiter(Attempt attempt, boolean mutates, Condition wakeUp, String key, java.util.Collection<String> adds) {
+        this(attempt, mutates, wakeUp, null, key, adds);
     }
 
-    Waiter(Attempt attempt, boolean mutates, Condition wakeUp, SpaceEngine.Completion<Object> completion) {
+    Waiter(Attempt attempt, boolean mutates, Condition wakeUp, SpaceEngine.Completion<Object> completion, String key,
+           java.util.Collection<String> adds) {
         this.attempt = attempt;
         this.mutates = mutates;
         this.wakeUp = wakeUp;
         this.completion = completion;
+        this.key = key;
+        this.adds = adds;
     }
 
     /** Records the result; a waiting thread is woken, a completion is left for the caller to run after unlocking. */

@@ -17,13 +17,15 @@ import java.util.Arrays;
  * the answer (Content-Length or chunked) on the calling thread, with no thread hand-off, which is what keeps a
  * remote call close to the raw round trip. Also reads a streaming (chunked) answer line by line.
  *
- * <p>Reads wait in short slices so a waiting call can notice its thread's interrupt (and the connection being
- * closed from another thread) without making the socket unusable.
+ * <p>Reads wait in slices so a waiting call can notice its thread's interrupt (and the connection being closed
+ * from another thread) without making the socket unusable. A slice starts at 25 ms and doubles, up to 400 ms, while
+ * an answer is awaited: a thousand callers waiting for long then cost a few wake-ups a second each, not forty.
  */
 final class HttpConnection implements Closeable {
 
-    /** How often a waiting read looks at its abort condition. */
+    /** How often a waiting read looks at its abort condition: at first, and at most. */
     private static final int SLICE_MILLIS = 25;
+    private static final int LONGEST_SLICE_MILLIS = 400;
     private static final int MAX_HEADER_BYTES = 16 * 1024;
 
     private final Socket socket;
@@ -34,6 +36,8 @@ final class HttpConnection implements Closeable {
     private int start;
     private int end;
     private volatile boolean closed;
+    /** The current read slice, ms. */
+    private int slice = SLICE_MILLIS;
     /** Whether this connection has completed an exchange before (a stale keep-alive connection fails at once). */
     boolean reused;
 
@@ -86,6 +90,7 @@ final class HttpConnection implements Closeable {
      * @param abort    checked while waiting
      */
     Response receive(long deadline, Abort abort) throws IOException {
+        shortSlices();
         Head head = readHead(deadline, abort);
         byte[] body;
         if (head.chunked) {
@@ -126,6 +131,7 @@ final class HttpConnection implements Closeable {
      * @param idleDeadline by when something must arrive
      */
     byte[] readLine(long idleDeadline, Abort abort) throws IOException {
+        shortSlices();
         java.io.ByteArrayOutputStream line = null;
         while (true) {
             if (chunkLeft == 0) {
@@ -162,6 +168,14 @@ final class HttpConnection implements Closeable {
             if (line.size() > 16 * 1024 * 1024) {
                 throw new IOException("a notification line is too long");
             }
+        }
+    }
+
+    /** Starts a new wait with short slices. */
+    private void shortSlices() throws IOException {
+        if (slice != SLICE_MILLIS) {
+            slice = SLICE_MILLIS;
+            socket.setSoTimeout(SLICE_MILLIS);
         }
     }
 
@@ -318,12 +332,16 @@ final class HttpConnection implements Closeable {
                     throw new EOFException("the server closed the connection");
                 }
                 return read;
-            } catch (SocketTimeoutException slice) {
+            } catch (SocketTimeoutException sliceOver) {
                 if (closed) {
                     throw new IOException("connection closed");
                 }
                 abort.check();
-                if (System.nanoTime() - deadline > 0) {
+                long left = deadline - System.nanoTime();
+                if (left > 0) {
+                    slice = Math.min(LONGEST_SLICE_MILLIS, slice * 2);
+                    socket.setSoTimeout((int) Math.max(1, Math.min(slice, left / 1_000_000 + 1)));
+                } else {
                     throw new SocketTimeoutException("no answer in time");
                 }
             }
