@@ -87,7 +87,9 @@ public final class SpaceServer implements AutoCloseable {
         http.setSendDateHeader(false);
         http.setOutputBufferSize(32 * 1024);
         http.setRequestHeaderSize(16 * 1024); // room for a batch of take confirmations (Space-Ack)
-        ServerConnector connector = new ServerConnector(jetty, 1, 1, new HttpConnectionFactory(http));
+        // operations run on the selector threads (they never block): one selector per CPU, up to two
+        int selectors = Math.min(2, Runtime.getRuntime().availableProcessors());
+        ServerConnector connector = new ServerConnector(jetty, 1, selectors, new HttpConnectionFactory(http));
         connector.setHost(options.bindAddress());
         connector.setPort(options.port());
         connector.setIdleTimeout(Math.max(options.maxWaitMillis(), options.heartbeatMillis()) + 30_000);

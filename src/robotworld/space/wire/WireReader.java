@@ -244,10 +244,23 @@ public final class WireReader implements AutoCloseable {
             throw new WireFormatException("a cref's id must not be blank");
         }
         try {
-            return crefs.incoming(new ContainerRef(new URI(space), id));
+            return crefs.incoming(new ContainerRef(spaceUri(space), id));
         } catch (URISyntaxException e) {
             throw new WireFormatException("a cref's space is not a URI: " + Wire.truncate(space));
         }
+    }
+
+    /** The last space URI parsed (nearly every cref names the same space), so it is parsed once, not per request. */
+    private static volatile URI lastSpace;
+
+    private static URI spaceUri(String text) throws URISyntaxException {
+        URI last = lastSpace;
+        if (last != null && last.toString().equals(text)) {
+            return last;
+        }
+        URI parsed = new URI(text);
+        lastSpace = parsed;
+        return parsed;
     }
 
     // ---- items, templates, selectors, specs ----
