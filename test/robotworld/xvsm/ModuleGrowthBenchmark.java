@@ -19,8 +19,9 @@ import robotworld.space.server.SpaceServer;
  * program serving {@code N} bumper modules (its own runtime and connection; every module waiting for requests), and
  * one caller program calling a random one of them, for N = 1, 100 and 1 000 ({@code bench.growth.modules}). Prints
  * the module-call p50 and p99 for each N (median of {@code bench.growth.runs} runs of {@code bench.growth.calls}
- * calls) and the threads of the process by role, taken while every module waits: the server's ({@code space-server*}),
- * the space clients' ({@code space-client*}) and the Local sides' ({@code xvsm-serve*}).
+ * calls) and the threads of the process by role, taken while every module waits, after the threads started for the
+ * start-up burst have ended (11 s, {@code bench.growth.settleMillis}): the server's ({@code space-server*}), the
+ * space clients' ({@code space-client*}) and the Local sides' ({@code xvsm-serve*}).
  */
 public final class ModuleGrowthBenchmark {
 
@@ -71,7 +72,8 @@ public final class ModuleGrowthBenchmark {
             while (System.nanoTime() < warmUntil) {
                 callRandom(remotes);
             }
-            Thread.sleep(200); // every module is back to waiting
+            // threads started for the start-up burst (a thousand connections at once) end after 10 s idle
+            Thread.sleep(Long.getLong("bench.growth.settleMillis", 11_000));
             Map<String, Integer> threads = threadsByRole();
             List<Double> p50s = new ArrayList<>();
             List<Double> p99s = new ArrayList<>();

@@ -288,6 +288,7 @@ final class AsyncCalls implements Runnable {
             if (answer == null) {
                 return; // not all there yet
             }
+            failingSince = 0;
             active.remove(this);
             key.interestOps(0);
             key.attach(null);
@@ -345,6 +346,16 @@ final class AsyncCalls implements Runnable {
             send();
         }
 
+        /** When this call's connection attempts started failing. */
+        private long failingSince;
+
+        private long firstFailure() {
+            if (failingSince == 0) {
+                failingSince = System.nanoTime();
+            }
+            return failingSince;
+        }
+
         private void retryLater() {
             long pause = Math.min(250, 5L << Math.min(attempt++, 10));
             try {
@@ -380,6 +391,10 @@ final class AsyncCalls implements Runnable {
             }
             if (reused && attempt++ == 0 && running()) {
                 send(); // most likely a keep-alive connection the server had closed while idle
+                return;
+            }
+            if (!sent && running() && System.nanoTime() - firstFailure() < owner.allowanceNanos()) {
+                retryLater(); // not connected yet (a burst of connections, a full accept queue): nothing happened
                 return;
             }
             finish(null, new SpaceUnavailableException(owner.url(), "cannot reach the space server for "

@@ -379,6 +379,10 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         return acks;
     }
 
+    long allowanceNanos() {
+        return TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
+    }
+
     ScheduledExecutorService timer() {
         return timer;
     }

@@ -92,6 +92,7 @@ public final class SpaceServer implements AutoCloseable {
         ServerConnector connector = new ServerConnector(jetty, 1, selectors, new HttpConnectionFactory(http));
         connector.setHost(options.bindAddress());
         connector.setPort(options.port());
+        connector.setAcceptQueueSize(1024); // a provider starting a thousand modules connects all at once
         connector.setIdleTimeout(Math.max(options.maxWaitMillis(), options.heartbeatMillis()) + 30_000);
         jetty.addConnector(connector);
         try {
