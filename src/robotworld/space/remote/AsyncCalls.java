@@ -9,11 +9,11 @@ import java.nio.ByteBuffer;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayDeque;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ConcurrentLinkedDeque;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.RejectedExecutionException;
@@ -49,10 +49,10 @@ final class AsyncCalls implements Runnable {
     private final RemoteSpace owner;
     private final java.nio.channels.Selector selector;
     private final ConcurrentLinkedQueue<Runnable> tasks = new ConcurrentLinkedQueue<>();
-    /** I/O thread only. */
-    private final Set<Call> active = new HashSet<>();
-    /** I/O thread only. */
-    private final ArrayDeque<SocketChannel> idle = new ArrayDeque<>();
+    /** Calls whose request is out (or going out), for the deadline checks. */
+    private final Set<Call> active = ConcurrentHashMap.newKeySet();
+    /** Connections kept for reuse, registered for reading (so a close by the server is noticed). */
+    private final ConcurrentLinkedDeque<SocketChannel> idle = new ConcurrentLinkedDeque<>();
     private Thread thread;
     private volatile boolean closed;
 
@@ -61,8 +61,15 @@ final class AsyncCalls implements Runnable {
         this.selector = java.nio.channels.Selector.open();
     }
 
-    /** Starts a call; its outcome goes to its completion. */
+    /**
+     * Starts a call; its outcome goes to its completion. On a thread other than the I/O thread (a provider's serving
+     * thread sending an answer and its next take) the request goes out at once on an idle connection, so the I/O
+     * thread is not woken for it; it only reads the answer.
+     */
     SpaceEngine.Pending start(Call call) {
+        if (thread != null && Thread.currentThread() != thread && !closed && call.sendDirect()) {
+            return call;
+        }
         execute(call::send);
         return call;
     }
@@ -161,7 +168,7 @@ final class AsyncCalls implements Runnable {
         private final Timeout timeout;
         private final SpaceEngine.Completion<List<Entry>> done;
         private final long operationDeadline;
-        // the fields below belong to the I/O thread
+        // the fields below belong to the thread sending the request, then to the I/O thread
         private String callId;
         private String ackHeader;
         private SocketChannel channel;
@@ -171,7 +178,7 @@ final class AsyncCalls implements Runnable {
         private long ioDeadline;
         /** How long the answer may take once the request is out: the server's wait plus the network allowance. */
         private long answerNanos;
-        private boolean sent;
+        private volatile boolean sent;
         private boolean reused;
         private int attempt;
         /** RUNNING, then DONE or CANCELLED; guarded by this. */
@@ -205,23 +212,7 @@ final class AsyncCalls implements Runnable {
                 return;
             }
             long now = System.nanoTime();
-            Timeout wait = timeout.isInfinite() ? Timeout.INFINITE
-                    : Timeout.ofMillis(Math.max(0, TimeUnit.NANOSECONDS.toMillis(operationDeadline - now)));
-            forgetCallIds();
-            callId = owner.newCallId();
-            owner.waiting(callId, true);
-            if (composite) {
-                owner.waiting(RemoteSpace.takeId(callId), true);
-            }
-            byte[] body = request.encode(callId, wait);
-            ackHeader = owner.acks().drain();
-            out = ByteBuffer.wrap(owner.requestBytes(request.operation(), ackHeader, body));
-            in.clear();
-            sent = false;
-            long serverWait = wait.isInfinite() ? owner.serverMaxWaitMillis
-                    : Math.min(wait.millis(), owner.serverMaxWaitMillis);
-            answerNanos = TimeUnit.MILLISECONDS.toNanos(serverWait + owner.options.networkAllowanceMillis());
-            ioDeadline = now + answerNanos;
+            prepare(now);
             active.add(this);
             try {
                 channel = idle.pollFirst();
@@ -244,6 +235,67 @@ final class AsyncCalls implements Runnable {
             } catch (IOException e) {
                 broken(e);
             }
+        }
+
+        /**
+         * Sends the request from this (non-I/O) thread on an idle connection, which stays registered for reading;
+         * false if there is none.
+         */
+        boolean sendDirect() {
+            if (!running()) {
+                return true;
+            }
+            SocketChannel idleChannel = idle.pollFirst();
+            if (idleChannel == null) {
+                return false;
+            }
+            SelectionKey idleKey = idleChannel.keyFor(selector);
+            if (idleKey == null || !idleKey.isValid()) {
+                closeQuietly(idleChannel);
+                return false;
+            }
+            prepare(System.nanoTime());
+            channel = idleChannel;
+            key = idleKey;
+            reused = true;
+            active.add(this);
+            idleKey.attach(this); // publishes this call's fields to the I/O thread before any answer can arrive
+            try {
+                idleChannel.write(out);
+                if (out.hasRemaining()) {
+                    execute(() -> {
+                        if (key == idleKey && idleKey.isValid()) {
+                            idleKey.interestOps(SelectionKey.OP_WRITE);
+                        }
+                    });
+                } else {
+                    sent = true;
+                }
+            } catch (IOException e) {
+                execute(() -> broken(e));
+            }
+            return true;
+        }
+
+        /** A new call id and request; the fields every send starts from. */
+        private void prepare(long now) {
+            Timeout wait = timeout.isInfinite() ? Timeout.INFINITE
+                    : Timeout.ofMillis(Math.max(0, TimeUnit.NANOSECONDS.toMillis(operationDeadline - now)));
+            forgetCallIds();
+            callId = owner.newCallId();
+            owner.waiting(callId, true);
+            if (composite) {
+                owner.waiting(RemoteSpace.takeId(callId), true);
+            }
+            byte[] body = request.encode(callId, wait);
+            ackHeader = owner.acks().drain();
+            out = ByteBuffer.wrap(owner.requestBytes(request.operation(), ackHeader, body));
+            in.clear();
+            sent = false;
+            long serverWait = wait.isInfinite() ? owner.serverMaxWaitMillis
+                    : Math.min(wait.millis(), owner.serverMaxWaitMillis);
+            answerNanos = TimeUnit.MILLISECONDS.toNanos(serverWait + owner.options.networkAllowanceMillis());
+            ioDeadline = now + answerNanos;
         }
 
         /** The connection is ready for what this call waits for. I/O thread. */

@@ -79,7 +79,8 @@ public final class SpaceServer implements AutoCloseable {
         // notification stream
         QueuedThreadPool threads = new QueuedThreadPool(options.maxSessions() + MAX_BUSY_THREADS, 4);
         threads.setName("space-server");
-        threads.setIdleTimeout(10_000); // threads started for a burst of work end soon after it
+        threads.setIdleTimeout(10_000); // threads started for a burst of work end soon after it,
+        threads.setMaxEvictCount(64);   // all of them, not one per idle timeout
         threads.setDaemon(true);
         Server jetty = new Server(threads);
         HttpConfiguration http = new HttpConfiguration();
