@@ -4,6 +4,7 @@ import java.net.URI;
 import java.util.List;
 import java.util.Set;
 import java.util.function.Supplier;
+import robotworld.space.AsyncTakes;
 import robotworld.space.Capi;
 import robotworld.space.ContainerInfo;
 import robotworld.space.ContainerRef;
@@ -15,6 +16,7 @@ import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
 import robotworld.space.Selector;
 import robotworld.space.SpaceClosedException;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
 import robotworld.space.SpaceInterruptedException;
 import robotworld.space.SpaceUnavailableException;
@@ -28,13 +30,15 @@ import robotworld.space.Timeout;
  * without an answer ({@link SpaceUnavailableException}, closed, interrupted) prove nothing. Otherwise it passes
  * every call through unchanged.
  */
-final class ContactTrackingSpace implements Capi {
+final class ContactTrackingSpace implements Capi, AsyncTakes {
 
     private final Capi space;
+    private final AsyncTakes takes;
     private final Runnable contact;
 
     ContactTrackingSpace(Capi space, Runnable contact) {
         this.space = space;
+        this.takes = AsyncTakes.of(space);
         this.contact = contact;
     }
 
@@ -138,5 +142,40 @@ final class ContactTrackingSpace implements Capi {
     @Override
     public String toString() {
         return space.toString();
+    }
+
+    // ---- takes that wait without a thread (how Local sides wait for requests) ----
+
+    @Override
+    public SpaceEngine.Pending takeLater(ContainerRef container, Timeout timeout, Selector[] selectors,
+                                         SpaceEngine.Completion<List<Entry>> done) {
+        return takes.takeLater(container, timeout, selectors, tracked(done));
+    }
+
+    @Override
+    public SpaceEngine.Pending shiftThenTakeLater(ContainerRef shiftTo, List<Item> items, ContainerRef takeFrom,
+                                                  Timeout timeout, Selector[] selectors,
+                                                  SpaceEngine.Completion<List<Entry>> done) {
+        return takes.shiftThenTakeLater(shiftTo, items, takeFrom, timeout, selectors, tracked(done));
+    }
+
+    /** The same completion, telling of the contact first when the space answered. */
+    private SpaceEngine.Completion<List<Entry>> tracked(SpaceEngine.Completion<List<Entry>> done) {
+        return new SpaceEngine.Completion<>() {
+            @Override
+            public void completed(List<Entry> entries) {
+                contact.run();
+                done.completed(entries);
+            }
+
+            @Override
+            public void failed(SpaceException failure) {
+                if (!(failure instanceof SpaceUnavailableException || failure instanceof SpaceClosedException
+                        || failure instanceof SpaceInterruptedException)) {
+                    contact.run();
+                }
+                done.failed(failure);
+            }
+        };
     }
 }

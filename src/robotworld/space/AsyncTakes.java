@@ -18,6 +18,14 @@ import java.util.List;
 public interface AsyncTakes {
 
     /**
+     * {@code space} itself if it can wait without a thread, else an adapter whose takes each wait on a thread of
+     * their own (for wrappers and other implementations of {@link Capi}).
+     */
+    static AsyncTakes of(Capi space) {
+        return space instanceof AsyncTakes async ? async : new ThreadPerTake(space);
+    }
+
+    /**
      * A {@code take} that waits without a thread.
      *
      * @return a handle to withdraw it

@@ -9,7 +9,6 @@ import java.util.function.Function;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robotworld.space.AsyncTakes;
-import robotworld.space.Capi;
 import robotworld.space.ContainerNotFoundException;
 import robotworld.space.Entry;
 import robotworld.space.Item;
@@ -31,8 +30,8 @@ import robotworld.space.Timeout;
  * closed. Stopping is clean: a waiting take is withdrawn (nothing it took is lost), and a request that was taken is
  * always answered before the server ends.
  *
- * <p>A space connection that cannot wait without a thread (another {@link Capi}) is served the same way, with
- * the take waiting on a thread of its own.
+ * <p>A space connection that cannot wait without a thread (another {@code Capi}) is served the same way, with
+ * the take waiting on a thread of its own ({@link AsyncTakes#of}).
  */
 final class RequestServer {
 
@@ -71,7 +70,7 @@ final class RequestServer {
         this.name = name;
         this.answerer = answerer;
         this.batching = batching;
-        this.takes = containers.space() instanceof AsyncTakes async ? async : new ThreadPerTake(containers.space());
+        this.takes = AsyncTakes.of(containers.space());
     }
 
     void start() {
@@ -297,67 +296,5 @@ final class RequestServer {
             }
         }
         return requests;
-    }
-
-    /**
-     * Waits without {@link AsyncTakes}: each take blocks a thread of its own, which a cancel interrupts. Only for
-     * space connections other than the embedded and the remote one.
-     */
-    private static final class ThreadPerTake implements AsyncTakes {
-        private final Capi space;
-
-        ThreadPerTake(Capi space) {
-            this.space = space;
-        }
-
-        @Override
-        public SpaceEngine.Pending takeLater(robotworld.space.ContainerRef container, Timeout timeout,
-                                             Selector[] selectors, SpaceEngine.Completion<List<Entry>> done) {
-            return run(() -> space.take(container, timeout, selectors), done);
-        }
-
-        @Override
-        public SpaceEngine.Pending shiftThenTakeLater(robotworld.space.ContainerRef shiftTo, List<Item> items,
-                                                      robotworld.space.ContainerRef takeFrom, Timeout timeout,
-                                                      Selector[] selectors,
-                                                      SpaceEngine.Completion<List<Entry>> done) {
-            return run(() -> space.shiftThenTake(shiftTo, items, takeFrom, timeout, selectors), done);
-        }
-
-        private static SpaceEngine.Pending run(java.util.function.Supplier<List<Entry>> take,
-                                               SpaceEngine.Completion<List<Entry>> done) {
-            java.util.concurrent.atomic.AtomicBoolean cancelling = new java.util.concurrent.atomic.AtomicBoolean();
-            java.util.concurrent.atomic.AtomicBoolean delivered = new java.util.concurrent.atomic.AtomicBoolean();
-            Thread thread = new Thread(() -> {
-                List<Entry> entries = null;
-                SpaceException failure = null;
-                try {
-                    entries = take.get();
-                } catch (SpaceException e) {
-                    failure = e;
-                }
-                if (cancelling.get() && failure instanceof robotworld.space.SpaceInterruptedException) {
-                    return; // withdrawn: an interrupted take had no effect
-                }
-                delivered.set(true); // a take that happened despite the cancel is delivered, never lost
-                if (failure != null) {
-                    done.failed(failure);
-                } else {
-                    done.completed(entries);
-                }
-            }, "xvsm-serve-take");
-            thread.setDaemon(true);
-            thread.start();
-            return () -> {
-                cancelling.set(true);
-                thread.interrupt();
-                try {
-                    thread.join(JOIN_MILLIS);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-                return !delivered.get();
-            };
-        }
     }
 }
