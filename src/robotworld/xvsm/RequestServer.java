@@ -149,7 +149,7 @@ final class RequestServer {
                 List<Entry> waitingNow = containers.onRequests(requests -> containers.space().take(requests,
                         Timeout.TRY_ONCE, Selector.fifo(Selector.ALL)));
                 if (!waitingNow.isEmpty()) {
-                    work(waitingNow);
+                    ServingThreads.execute(() -> work(waitingNow)); // not work(): a busy module would recurse
                     return;
                 }
                 await(null);
