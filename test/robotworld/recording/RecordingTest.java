@@ -52,7 +52,25 @@ class RecordingTest {
         Path file = temp.resolve("run.mcap");
         Recorder recorder = Recorder.start(file, new Recorder.Start(SimWorld.LAYOUT, world.url(),
                 "<RobotWorld/>".getBytes()), Recorder.Options.defaults());
-        WorldTap tap = new WorldTap(world.space(), SimWorld.LAYOUT).add(recorder.observer()).start();
+        // the tap hears of a request and of its answer through two subscriptions, in either order: count both
+        java.util.concurrent.atomic.AtomicInteger motorRequests = new java.util.concurrent.atomic.AtomicInteger();
+        java.util.concurrent.atomic.AtomicInteger motorAnswers = new java.util.concurrent.atomic.AtomicInteger();
+        WorldTap tap = new WorldTap(world.space(), SimWorld.LAYOUT).add(recorder.observer())
+                .add(new robotworld.observe.WorldObserver() {
+                    @Override
+                    public void requestSeen(robotworld.observe.RequestSeen event) {
+                        if (event.module().name().equals("Motor")) {
+                            motorRequests.incrementAndGet();
+                        }
+                    }
+
+                    @Override
+                    public void answerSeen(robotworld.observe.AnswerSeen event) {
+                        if (event.module().name().equals("Motor")) {
+                            motorAnswers.incrementAndGet();
+                        }
+                    }
+                }).start();
         XVSMRuntime laptop = world.host("laptop");
         XVSMMotorModuleRemote motor = new XVSMMotorModuleRemote(laptop, SimWorld.ROBOT, "Motor");
         XVSMBumperModuleRemote bumper = new XVSMBumperModuleRemote(laptop, SimWorld.ROBOT, "Bumper");
@@ -63,8 +81,10 @@ class RecordingTest {
             ir.getSingleSensor(1);
         }
         motor.setMotor(1, 0);
-        // the answers reach the tap, and at least a few ground-truth frames
-        waitFor(() -> recorder.status().messages() >= 6L * rounds + 20);
+        // every motor request and answer reach the tap (and so the recorder, which hears of them first), and at least
+        // a few ground-truth frames
+        waitFor(() -> motorRequests.get() > rounds && motorAnswers.get() > rounds
+                && recorder.status().messages() >= 6L * rounds + 20);
         tap.close();
         recorder.close("test done");
         assertEquals(0, recorder.status().dropped());
