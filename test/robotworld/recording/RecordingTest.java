@@ -169,12 +169,16 @@ class RecordingTest {
             file = record(world, 10);
         }
         List<String> recorded = new ArrayList<>();
+        List<Long> recordedFrames = new ArrayList<>();
         try (McapReader reader = McapReader.open(file)) {
             Map<Integer, String> schemaOf = new HashMap<>();
             Summary summary = reader.summary().orElseThrow();
             summary.channels().forEach(c -> schemaOf.put(c.id(), summary.schema(c.schemaId()).name()));
             McapReader.Cursor cursor = reader.cursor();
             for (DataRecord record = cursor.next(); record != null; record = cursor.next()) {
+                if (record instanceof Message m && schemaOf.get(m.channelId()).equals("rwe.GroundTruth")) {
+                    recordedFrames.add(TrafficJson.parse(m.data()).get("sequence").asLong());
+                }
                 if (record instanceof Message m && schemaOf.get(m.channelId()).equals("rwe.ModuleTraffic")) {
                     TrafficJson.Traffic t = TrafficJson.traffic(TrafficJson.parse(m.data()));
                     recorded.add(t.module().name() + " " + (t.kind().equals("request") ? "request" : "answer") + " "
@@ -190,7 +194,7 @@ class RecordingTest {
             WorldTap tap = new WorldTap(space, replayer.layout()).add(seen).start();
             try {
                 replayer.play(space, options, progress -> { });
-                waitFor(() -> seen.traffic.size() >= recorded.size());
+                waitFor(() -> seen.traffic.size() >= recorded.size() && seen.frames.size() >= recordedFrames.size());
             } finally {
                 tap.close();
             }
@@ -206,7 +210,8 @@ class RecordingTest {
             }
         }
         assertEquals(recorded.size(), seen.traffic.size());
-        assertTrue(seen.frames.size() >= 3);
+        assertTrue(!recordedFrames.isEmpty(), "the simulator's frames were recorded");
+        assertEquals(recordedFrames, seen.frames.stream().map(GroundTruth::sequence).toList(), "every frame, in order");
     }
 
     @Test
