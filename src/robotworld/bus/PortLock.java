@@ -94,11 +94,12 @@ final class PortLock implements Closeable {
         }
         long pid = readPid(lock);
         if (pid > 0 && pid != ProcessHandle.current().pid() && isAlive(pid)) {
-            throw new PortInUseException(portName, "is in use by " + describe(pid) + " (its lock file " + lock
-                    + " says so): stop that program, or give another port");
+            throw new PortInUseException(portName, describe(pid), "is in use by " + describe(pid) + " (its lock file "
+                    + lock + " says so): stop that program, or give another port");
         }
         if (pid == ProcessHandle.current().pid()) {
-            throw new PortInUseException(portName, "is already open in this program (lock file " + lock + ")");
+            throw new PortInUseException(portName, "this program", "is already open in this program (lock file " + lock
+                    + ")");
         }
         try {
             Files.deleteIfExists(lock);
@@ -154,8 +155,8 @@ final class PortLock implements Closeable {
             for (Path process : processes) {
                 long pid = Long.parseLong(process.getFileName().toString());
                 if (pid != self && holds(process, device) && !(ptyIndex != null && holdsMaster(process, ptyIndex))) {
-                    throw new PortInUseException(portName, "is in use by " + describe(pid) + ", which has it open:"
-                            + " stop that program, or give another port");
+                    throw new PortInUseException(portName, describe(pid), "is in use by " + describe(pid) + ", which "
+                            + "has it open: stop that program, or give another port");
                 }
             }
         } catch (IOException e) {
@@ -225,8 +226,8 @@ final class PortLock implements Closeable {
             return lock;
         } catch (FileAlreadyExistsException e) {
             long pid = readPid(lock);
-            throw new PortInUseException(portName, "was taken by " + describe(pid) + " just now (lock file " + lock
-                    + ")");
+            throw new PortInUseException(portName, describe(pid), "was taken by " + describe(pid) + " just now (lock "
+                    + "file " + lock + ")");
         } catch (AccessDeniedException | NoSuchFileException e) {
             LOG.debug("no lock file {}: {}", lock, e.getMessage());
             return null;

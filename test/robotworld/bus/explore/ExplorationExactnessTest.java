@@ -57,8 +57,6 @@ class ExplorationExactnessTest {
                     ExplorationResult result = explorer(bus).explore("Late", new ExplorationListener() { });
                     // found, or (on a machine so busy that even the patient retries missed) reported, never lost
                     assertEquals(Set.of(1, 2, 3, 4), foundOrReported(result), "run " + run + ": " + result.problems());
-                    assertTrue(result.statistics().strayFrames() >= 1, "found through late replies: "
-                            + result.statistics());
                 }
             }
         }
