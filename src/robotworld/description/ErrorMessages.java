@@ -43,7 +43,10 @@ final class ErrorMessages {
                     + " X10LampModule, ...)"),
             Map.entry("VersionType", "a version may contain only letters, digits, '.', '_' and '-'"),
             Map.entry("DocRefType", "a DocRef is a relative path or URL without spaces or quotes"),
-            Map.entry("DetailsType", "details are at most 1000 characters of text"));
+            Map.entry("DetailsType", "details are at most 1000 characters of text"),
+            Map.entry("CommandTimeoutType", "a command timeout is a number of milliseconds from 50 to 3600000"),
+            Map.entry("WatchdogType", "a watchdog time is 0 (off) or a number of milliseconds from 10 to 65535"),
+            Map.entry("X10SafeStateType", "an X10 module's safe state is unchanged, off or on"));
 
     /** Types whose message lists the values of the schema in use, after these words. */
     private static final Map<String, String> ENUMERATED = Map.of(
@@ -77,8 +80,12 @@ final class ErrorMessages {
             return new Described(prefix(at) + ALLOWED.get(type.group(1)) + got(at), null);
         }
         if (raw.startsWith("Invalid decimal value") || raw.startsWith("Invalid int value")) {
-            String expected = at != null && at.element().equals("NodeNumber") ? ALLOWED.get("NodeNumberType")
-                    : "a number is expected";
+            String expected = at == null ? "a number is expected" : switch (at.element()) {
+                case "NodeNumber" -> ALLOWED.get("NodeNumberType");
+                case "CommandTimeout" -> ALLOWED.get("CommandTimeoutType");
+                case "Watchdog" -> ALLOWED.get("WatchdogType");
+                default -> "a number is expected";
+            };
             return new Described(prefix(at) + expected + got(at), null);
         }
         return new Described(prefix(at) + raw, null);

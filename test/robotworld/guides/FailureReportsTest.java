@@ -197,9 +197,35 @@ class FailureReportsTest {
     }
 
     @Test
-    void monitorWithoutItsSpaceNamesRweSpaceAndTheOption() {
+    void monitorWithoutItsSpaceOrTokenNamesTheFix() throws Exception {
         rwe("monitor", "--console", "--for", "1", "--space", "http://127.0.0.1:" + closedPort() + "/space",
                 CHAPTER5.toString()).assertReport("cannot reach the space", "--space URL");
+        try (SpaceServer guarded = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200)
+                .token("s3cret-token-for-the-test"))) {
+            rwe("monitor", "--console", "--for", "1", "--space", guarded.uri().toString(), CHAPTER5.toString())
+                    .assertReport("needs an access token", "RWE_SPACE_TOKEN_FILE");
+        }
+    }
+
+    @Test
+    void exploringASilentBusNamesWhatToCheck() {
+        rwe("explore", "--port", "tcp://127.0.0.1:" + silent.port(), "--name", "R", "--from", "1", "--to", "3",
+                "--out", folder.resolve("silent.xml").toString()).assertReport("no module answered", "--baud auto");
+    }
+
+    @Test
+    void verbsShowTheTraceWithDebugOnly() {
+        Verb quiet = rwe("explore", "--port", "tcp://127.0.0.1:" + closedPort(), "--name", "R", "--out",
+                folder.resolve("q.xml").toString());
+        assertTrue(!quiet.stderr().contains("\tat "), quiet.stderr());
+        System.setProperty("rwe.debug", "true");
+        try {
+            Verb loud = rwe("explore", "--port", "tcp://127.0.0.1:" + closedPort(), "--name", "R", "--out",
+                    folder.resolve("q.xml").toString());
+            assertTrue(loud.stderr().contains("\tat robotworld."), loud.stderr());
+        } finally {
+            System.clearProperty("rwe.debug");
+        }
     }
 
     @Test
@@ -250,9 +276,13 @@ class FailureReportsTest {
         return new Run(process.exitValue(), Files.readString(err, StandardCharsets.UTF_8));
     }
 
+    /** A verb's run; its report starts at "rwe VERB:" (explore shows its progress bar on standard error first). */
     private record Verb(int exit, String stderr) {
         void assertReport(String what, String fix) {
-            new Run(exit, stderr).assertReport(what, fix);
+            int report = stderr.startsWith("rwe ") ? 0 : stderr.indexOf("\nrwe ") + 1;
+            assertTrue(report >= 0, "no report:\n" + stderr);
+            new Run(exit, stderr.substring(report)).assertReport(what, fix);
+            assertTrue(stderr.substring(0, report).lines().noneMatch(l -> l.strip().startsWith("at ")), stderr);
         }
     }
 

@@ -188,6 +188,10 @@ final class Walkthrough implements AutoCloseable {
         environment.put("JAVA_HOME", System.getProperty("java.home"));
         if (!freshClone) {
             environment.put("RWE_NO_BUILD", "1"); // ./antw test built it; never a second build beside this one
+            String buildDir = System.getProperty("rwe.build.dir");
+            if (buildDir != null) {
+                environment.put("RWE_BUILD_DIR", buildDir);
+            }
         }
         return builder.start();
     }

@@ -203,7 +203,9 @@ final class ExploreCommand implements Callable<Integer> {
         }
         stdout.println(result.summary(scanned));
         if (result.description().isEmpty()) {
-            stderr.println("rwe: no module found on " + port + "; nothing written");
+            stderr.println("rwe explore: no module answered on " + port + "; nothing written.");
+            stderr.println("Check that the robot is switched on and its bus connected (for a simulator: that rwe"
+                    + " simulate robot runs there), and the baud rate (--baud auto tries them).");
             return 1;
         }
         RobotWorldAssembler.write(result.description().get(), out);

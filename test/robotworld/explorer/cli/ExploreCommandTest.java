@@ -91,7 +91,8 @@ class ExploreCommandTest {
         int code = rwe("explore", "--port", port, "--name", "Nobody", "--out", file.toString(), "--from", "20",
                 "--to", "25", "--descriptions", ProjectFiles.resolve("ModuleDescriptions").toString());
         assertEquals(1, code);
-        assertTrue(err.toString().contains("no module found on " + port + "; nothing written"), err.toString());
+        assertTrue(err.toString().contains("rwe explore: no module answered on " + port + "; nothing written.\n"
+                + "Check that the robot is switched on"), err.toString());
         assertFalse(Files.exists(file));
     }
 

@@ -103,6 +103,7 @@ final class GeneratorProperty implements AutoCloseable {
                       <Class>X10LampModule</Class><Version>1.0</Version>
                       <Details>%s</Details>
                       <DocRef>docs/modules/x10-lamp.md</DocRef>
+                      <Safety><CommandTimeout>2000</CommandTimeout><SafeState>off</SafeState></Safety>
                     </X10Module>
                     <X10Module>
                       <Name>Fan</Name><HouseCode>P</HouseCode><UnitCode>SIXTEEN</UnitCode>
@@ -121,6 +122,7 @@ final class GeneratorProperty implements AutoCloseable {
                     <Module>
                       <Name>Motor-Controller</Name><NodeID>15B63A4</NodeID><NodeNumber>1</NodeNumber>
                       <Class>MotorModule</Class><Version>1.0</Version>
+                      <Safety><CommandTimeout>800</CommandTimeout><Watchdog>300</Watchdog></Safety>
                     </Module>
                     <Module>
                       <Name>Bumper-Sensor</Name><NodeID>15B63B2</NodeID><NodeNumber>2</NodeNumber>

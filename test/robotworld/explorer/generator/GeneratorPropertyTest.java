@@ -26,8 +26,8 @@ import robotworld.explorer.generator.GeneratorProperty.Slot;
 
 /**
  * Every description that validates generates and compiles for every viewpoint; every other one is rejected with
- * {@code file:line:column} in the author's words. Here: the names that used to break that promise, every pool
- * name in every slot through validation, and a random sample of worlds all the way through javac. The whole
+ * {@code file:line:column} in the author's words. Here: the names that used to break that promise, a sample of
+ * every pool's names in every slot through validation, and a random sample of worlds all the way through javac. The whole
  * cross product, compiled, is {@code ./antw soak-generator}. A failing sample names its seed:
  * {@code -Drwe.test.property.seed=N} repeats it, {@code -Drwe.test.property.samples=N} takes more.
  */
@@ -104,14 +104,21 @@ class GeneratorPropertyTest {
         }
     }
 
-    /** Validation alone, for every name of every pool in every slot: refused ones always at a position, in words. */
+    /**
+     * Validation alone, for a random sample of every pool's names in every slot: refused ones always at a position,
+     * in words. (The soak validates and compiles all of them.)
+     */
     @Test
-    void everyPoolNameInEverySlotIsAcceptedOrRefusedWithAPosition() throws Exception {
-        Map<Slot, List<String>> pools = pools(new Random(1));
-        int checked = 0;
+    void poolNamesInEverySlotAreAcceptedOrRefusedWithAPosition() throws Exception {
+        long seed = Long.getLong("rwe.test.property.seed", System.nanoTime());
+        Random random = new Random(seed);
+        Map<Slot, List<String>> pools = pools(random);
         List<String> broken = new ArrayList<>();
+        int checked = 0;
         for (Map.Entry<Slot, List<String>> pool : pools.entrySet()) {
-            for (String value : pool.getValue()) {
+            List<String> names = new ArrayList<>(pool.getValue());
+            java.util.Collections.shuffle(names, random);
+            for (String value : names.subList(0, Math.min(names.size(), 40))) {
                 String xml = GeneratorProperty.world(Map.of(pool.getKey(), value));
                 checked++;
                 try {
@@ -122,15 +129,15 @@ class GeneratorPropertyTest {
                 }
             }
         }
-        assertTrue(checked > 1000, "only " + checked + " names checked");
-        assertEquals(List.of(), broken);
+        assertTrue(checked > 300, "only " + checked + " names checked");
+        assertEquals(List.of(), broken, "seed " + seed);
     }
 
     /** Random worlds with one to three odd names each, through validation, generation and javac. */
     @Test
     void sampledWorldsValidateOnlyIfEveryViewpointCompiles() throws Exception {
         long seed = Long.getLong("rwe.test.property.seed", System.nanoTime());
-        int samples = Integer.getInteger("rwe.test.property.samples", 40);
+        int samples = Integer.getInteger("rwe.test.property.samples", 15);
         Random random = new Random(seed);
         Map<Slot, List<String>> pools = pools(random);
         List<Slot> slots = List.copyOf(pools.keySet());
