@@ -45,6 +45,22 @@ class BusWatchdogTest {
         rig.close();
     }
 
+    /** The test JVM sets long safety timeouts for the tests that are not about them: back to the defaults here. */
+    @BeforeEach
+    void defaults() {
+        watchdogSetting = System.getProperty("rwe.watchdog.ms");
+        System.clearProperty("rwe.watchdog.ms");
+    }
+
+    @AfterEach
+    void restore() {
+        if (watchdogSetting != null) {
+            System.setProperty("rwe.watchdog.ms", watchdogSetting);
+        }
+    }
+
+    private String watchdogSetting;
+
     @Test
     void aMotorModuleIsArmedWithTheDefaultAndKeptFedWhileTheProgramLives() throws Exception {
         try (XVSMRuntime runtime = XVSMRuntime.connect(rig.spaceUrl, "robot-pc")) {

@@ -50,8 +50,10 @@ class RemoteCommanderTest {
     void startRigAndProvider() throws Exception {
         rig = SafetyRig.start();
         provider = XVSMRuntime.connect(rig.spaceUrl, "robot-pc");
-        // not about the bus watchdog: a long one, so a busy machine does not stop the motors for another reason
+        // not about the bus watchdog: a long one, so a busy machine does not stop the motors for another reason;
+        // about the command timeout: the default, whatever the test JVM sets for other tests
         provider.safety().describe(SafetyRig.ROBOT, SafetyRig.MOTOR, new ModuleSafety(null, 10_000, null));
+        provider.safety().setDefaultCommandTimeout(SafetySettings.DEFAULT_COMMAND_TIMEOUT);
         RS485Bus bus = provider.own(new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
                 BusTiming.defaults().withFrameGap(Duration.ZERO)));
         motor = provider.own(new XVSMMotorModuleLocal(provider, SafetyRig.ROBOT, SafetyRig.MOTOR,

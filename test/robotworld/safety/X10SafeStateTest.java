@@ -30,6 +30,7 @@ class X10SafeStateTest {
     void start() throws Exception {
         rig = SafetyRig.start();
         room = XVSMRuntime.connect(rig.spaceUrl, "room-pc");
+        room.safety().setDefaultCommandTimeout(SafetySettings.DEFAULT_COMMAND_TIMEOUT);
     }
 
     @AfterEach

@@ -406,6 +406,7 @@ public final class Demo {
         List<String> properties = new ArrayList<>(List.of("-Drwe.space.url=" + spaceUrl,
                 "-Drwe.port." + ROBOT + ".bus=" + sims.busPort, "-Drwe.port." + ENVIRONMENT + ".x10=" + sims.x10Port,
                 "-Drwe.call.timeout.ms=" + START_TIMEOUT.toMillis()));
+        properties.addAll(safetySettings());
         step("running " + provider.mainClass() + " unchanged as the resource provider, then " + controller.mainClass()
                 + " with the control program for " + options.run().toSeconds() + " s", () -> {
             ProgramProcess providing = ProgramProcess.start(provider.destination(), provider.mainClass(), properties);
@@ -595,6 +596,18 @@ public final class Demo {
             summary.safe = true;
             return null;
         });
+    }
+
+    /** The safety settings given to the demo itself ({@code -Drwe.command.timeout.ms=...}), for its programs too. */
+    private static List<String> safetySettings() {
+        List<String> settings = new ArrayList<>();
+        for (String key : System.getProperties().stringPropertyNames()) {
+            if (key.startsWith("rwe.command.timeout.ms") || key.startsWith("rwe.watchdog.ms")
+                    || key.startsWith("rwe.x10.safe.state") || key.equals("rwe.heartbeat.ms")) {
+                settings.add("-D" + key + "=" + System.getProperty(key));
+            }
+        }
+        return settings;
     }
 
     /** Waits until the provider serves: a first call through the space that waits for its answer. */

@@ -68,6 +68,19 @@ class DemoTest {
 
     @Test
     void killingTheControlProgramMidDriveStopsTheRobot() throws Exception {
+        // the demo's programs get the demo's safety settings: here the defaults, which the kill is about
+        String commandTimeout = System.getProperty("rwe.command.timeout.ms");
+        System.clearProperty("rwe.command.timeout.ms");
+        try {
+            killAndWatch();
+        } finally {
+            if (commandTimeout != null) {
+                System.setProperty("rwe.command.timeout.ms", commandTimeout);
+            }
+        }
+    }
+
+    private void killAndWatch() throws Exception {
         StringWriter text = new StringWriter();
         DemoOptions options = new DemoOptions(Duration.ofSeconds(8), Viewpoint.ENVIRONMENT, temp.resolve("demo"), true,
                 ProjectFiles.root(), true);
