@@ -29,6 +29,18 @@ public final class TestPeers {
                 + "' (./antw test does so itself when run as root or with password-less sudo)");
     }
 
+    /**
+     * Skips the test unless this Java runtime can open windows: a headless JRE (Debian's {@code -headless} package)
+     * lacks the X11 toolkit ({@code libawt_xawt}) and reports itself headless whatever the display.
+     */
+    public static void requireFullJre() {
+        String jrePackage = "openjdk-" + Runtime.version().feature() + "-jre";
+        assumeTrue(Files.exists(Path.of(System.getProperty("java.home"), "lib", "libawt_xawt.so")),
+                "the full Java runtime is missing (this one is headless, without libawt_xawt): install it with 'sudo"
+                        + " apt-get install " + jrePackage + "' (./antw test does so itself when run as root or with"
+                        + " password-less sudo)");
+    }
+
     /** Whether an executable {@code command} is on the PATH. */
     public static boolean onPath(String command) {
         String path = System.getenv().getOrDefault("PATH", "");

@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robotworld.testsupport.ProjectFiles;
+import robotworld.testsupport.TestPeers;
 
 /**
  * Display problems as a user meets them, with the real command in a JVM of its own: no display, a DISPLAY that
@@ -67,6 +68,7 @@ class DisplayProblemsTest {
 
     @Test
     void aDisplayThatNamesNoXServerIsOneLineSuggestingConsole() throws Exception {
+        TestPeers.requireFullJre(); // a headless runtime says it is headless before it looks at the display
         assertOneClearLine(rwe(Map.of("DISPLAY", ":9999"), List.of(), "monitor", WORLD),
                 "rwe monitor: cannot open the display ':9999' (no X server answers there); use --console for a text "
                         + "view");
@@ -86,6 +88,7 @@ class DisplayProblemsTest {
 
     @Test
     void theDemoFallsBackToTheConsoleMonitorAndStillSummarizes() throws Exception {
+        TestPeers.requireFullJre();
         Run run = rwe(Map.of("DISPLAY", ":9999"), List.of(), "demo", "--seconds", "12", "--out",
                 temp.resolve("demo").toString());
         String all = run.out() + run.err();
