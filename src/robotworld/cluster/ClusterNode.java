@@ -68,6 +68,8 @@ final class ClusterNode {
     /** Registration of this member's listener on its own topic. */
     private volatile UUID topicRegistration;
     private final ScheduledThreadPoolExecutor background;
+    /** Steps of operations that wait without a thread (collect a result, withdraw, queue again). */
+    private final java.util.concurrent.ExecutorService steps;
     private final Delivery delivery;
     private final UUID membershipRegistration;
     private volatile boolean closed;
@@ -84,6 +86,12 @@ final class ClusterNode {
             return thread;
         });
         background.setRemoveOnCancelPolicy(true);
+        AtomicInteger stepThreads = new AtomicInteger();
+        this.steps = java.util.concurrent.Executors.newCachedThreadPool(task -> {
+            Thread thread = new Thread(task, "space-cluster-wait-" + stepThreads.incrementAndGet());
+            thread.setDaemon(true);
+            return thread;
+        });
         this.delivery = new Delivery("space-cluster");
         hazelcast.getUserContext().put(KEY, this);
         listenToOwnTopic();
@@ -388,9 +396,30 @@ final class ClusterNode {
     // ---- waiters and inboxes of this member ----
 
     LocalWaiter register(OpId call) {
-        LocalWaiter waiter = new LocalWaiter(call);
-        waiters.put(call, waiter);
+        return register(new LocalWaiter(call));
+    }
+
+    LocalWaiter register(LocalWaiter waiter) {
+        waiters.put(waiter.id(), waiter);
         return waiter;
+    }
+
+    /**
+     * Runs a step of an operation that waits without a thread (it makes calls to the cluster, so never on a
+     * Hazelcast thread): threads are made as needed and end when idle.
+     */
+    void runStep(Runnable step) {
+        try {
+            steps.execute(() -> {
+                try {
+                    step.run();
+                } catch (RuntimeException e) {
+                    LOG.log(Level.WARNING, "a waiting operation's step failed", e);
+                }
+            });
+        } catch (RejectedExecutionException closing) {
+            // the member is shutting down; its handles end their operations
+        }
     }
 
     void unregister(LocalWaiter waiter) {
@@ -423,9 +452,10 @@ final class ClusterNode {
         }
     }
 
-    void schedule(Runnable task, long delayMillis) {
+    /** Runs {@code task} after {@code delayMillis}; the handle cancels it (null if the member is closing). */
+    java.util.concurrent.ScheduledFuture<?> schedule(Runnable task, long delayMillis) {
         try {
-            background.schedule(() -> {
+            return background.schedule(() -> {
                 try {
                     task.run();
                 } catch (RuntimeException e) {
@@ -433,7 +463,7 @@ final class ClusterNode {
                 }
             }, delayMillis, TimeUnit.MILLISECONDS);
         } catch (RejectedExecutionException closing) {
-            // the member is shutting down
+            return null; // the member is shutting down
         }
     }
 
@@ -539,6 +569,7 @@ final class ClusterNode {
             // already shut down
         }
         background.shutdownNow();
+        steps.shutdown();
         delivery.close();
     }
 }

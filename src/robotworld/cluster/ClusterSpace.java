@@ -9,7 +9,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
 
-import robotworld.space.Capi;
+import robotworld.space.AsyncTakes;
 import robotworld.space.ContainerDestroyedException;
 import robotworld.space.ContainerInfo;
 import robotworld.space.ContainerNameTakenException;
@@ -22,7 +22,9 @@ import robotworld.space.Item;
 import robotworld.space.NotificationListener;
 import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
+import robotworld.space.Removal;
 import robotworld.space.Selector;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceClosedException;
 import robotworld.space.SpaceInterruptedException;
 import robotworld.space.SpaceTimeoutException;
@@ -37,7 +39,7 @@ import robotworld.space.internal.QueuedSubscription;
  * the package description for how, and for what a member's failure does). Closing a handle ends its own waiting
  * calls and subscriptions; the space and the member go on.
  */
-public final class ClusterSpace implements Capi {
+public final class ClusterSpace implements SpaceEngine, AsyncTakes {
 
     private static final System.Logger LOG = System.getLogger(ClusterSpace.class.getName());
 
@@ -47,6 +49,7 @@ public final class ClusterSpace implements Capi {
     private final int queueCapacity;
     private final Set<LocalWaiter> waiting = ConcurrentHashMap.newKeySet();
     private final Set<ClusterSubscription> subscriptions = ConcurrentHashMap.newKeySet();
+    private final Set<AsyncWaiter<?>> waitingWithoutThreads = ConcurrentHashMap.newKeySet();
     private volatile boolean closed;
 
     ClusterSpace(ClusterNode node, String name, int queueCapacity) {
@@ -196,13 +199,22 @@ public final class ClusterSpace implements Capi {
 
     private List<Entry> retrieve(ContainerCall.Kind kind, ContainerRef container, Timeout timeout,
                                  Selector[] selectors) {
+        return result(retrieveOutcome(kind, container, timeout, selectors), container);
+    }
+
+    private Outcome retrieveOutcome(ContainerCall.Kind kind, ContainerRef container, Timeout timeout,
+                                    Selector[] selectors) {
         String id = resolve(container);
         Objects.requireNonNull(timeout, "timeout");
+        Selector[] chain = checkedSelectors(selectors);
+        return perform(id, container, timeout, (call, wait) -> ContainerCall.retrieve(kind, call, chain, wait));
+    }
+
+    private static Selector[] checkedSelectors(Selector[] selectors) {
         for (Selector selector : selectors) {
             Objects.requireNonNull(selector, "selector");
         }
-        Selector[] chain = selectors.clone();
-        return perform(id, container, timeout, (call, wait) -> ContainerCall.retrieve(kind, call, chain, wait));
+        return selectors.clone();
     }
 
     @Override
@@ -210,7 +222,7 @@ public final class ClusterSpace implements Capi {
         String id = resolve(container);
         Objects.requireNonNull(timeout, "timeout");
         List<Item> copy = List.copyOf(items);
-        perform(id, container, timeout, (call, wait) -> ContainerCall.write(call, copy, wait));
+        result(perform(id, container, timeout, (call, wait) -> ContainerCall.write(call, copy, wait)), container);
     }
 
     @Override
@@ -245,7 +257,7 @@ public final class ClusterSpace implements Capi {
      * the handle closes, the waiter is withdrawn, unless the container served it meanwhile: then its result is
      * returned rather than lost.
      */
-    private List<Entry> perform(String id, ContainerRef container, Timeout timeout, Request request) {
+    private Outcome perform(String id, ContainerRef container, Timeout timeout, Request request) {
         checkOpen();
         long start = System.nanoTime();
         long deadline = timeout.isInfinite() ? Long.MAX_VALUE
@@ -268,10 +280,12 @@ public final class ClusterSpace implements Capi {
                     throw new SpaceTimeoutException("not possible at once on " + container);
                 }
                 if (outcome.status != Outcome.Status.QUEUED) {
-                    return result(outcome, container);
+                    result(outcome, container); // throws what failed
+                    return outcome;
                 }
-                List<Entry> result = await(id, container, waiter, deadline, timeout);
+                Outcome result = await(id, container, waiter, deadline, timeout);
                 if (result != null) {
+                    result(result, container);
                     return result;
                 }
                 // the container forgot the waiter (this member was cut off meanwhile): nothing happened; queue again
@@ -287,8 +301,8 @@ public final class ClusterSpace implements Capi {
 
     private enum GiveUp { TIMEOUT, INTERRUPTED, CLOSED }
 
-    /** Waits for a queued operation; its result, or null if the container no longer knows it. */
-    private List<Entry> await(String id, ContainerRef container, LocalWaiter waiter, long deadline,
+    /** Waits for a queued operation; its outcome, or null if the container no longer knows it. */
+    private Outcome await(String id, ContainerRef container, LocalWaiter waiter, long deadline,
                               Timeout timeout) {
         long nap = ClusterNode.FIRST_NAP_NANOS;
         long nextLook = System.nanoTime() + nap;
@@ -321,7 +335,7 @@ public final class ClusterSpace implements Capi {
                         }
                         case DESTROYED, NOT_FOUND -> throw destroyedWhileWaiting(container);
                         default -> {
-                            return result(look, container);
+                            return look;
                         }
                     }
                 }
@@ -335,7 +349,7 @@ public final class ClusterSpace implements Capi {
     }
 
     /** Withdraws a waiter; hands over its result if it was served meanwhile, else fails as {@code why} says. */
-    private List<Entry> giveUp(String id, ContainerRef container, LocalWaiter waiter, GiveUp why, Timeout timeout) {
+    private Outcome giveUp(String id, ContainerRef container, LocalWaiter waiter, GiveUp why, Timeout timeout) {
         Outcome outcome;
         try {
             outcome = about(ContainerCall.Kind.WITHDRAW, id, waiter.id(), allowance());
@@ -353,7 +367,7 @@ public final class ClusterSpace implements Capi {
                         + container);
             };
             case DESTROYED, NOT_FOUND -> throw destroyedWhileWaiting(container);
-            default -> result(outcome, container); // served before it could be withdrawn: never lose that
+            default -> outcome; // served before it could be withdrawn: never lose that
         };
     }
 
@@ -368,6 +382,26 @@ public final class ClusterSpace implements Capi {
             if (interrupted) {
                 Thread.currentThread().interrupt();
             }
+        }
+    }
+
+    /** As {@link #about(ContainerCall.Kind, String, OpId, long)}, within the call allowance. */
+    Outcome about(ContainerCall.Kind kind, String id, OpId waiter) {
+        return about(kind, id, waiter, allowance());
+    }
+
+    /** Runs a call on container {@code id} within the call allowance. */
+    Outcome call(String id, ContainerCall call) {
+        return node.call(name, id, call, allowance(), uri);
+    }
+
+    /** Puts removed entries back into container {@code id} (an undone take or destroy). */
+    void restore(String id, List<robotworld.space.internal.PlacedEntry> removed) {
+        OpId call = node.begin();
+        try {
+            node.call(name, id, ContainerCall.restore(call, removed), allowance(), uri);
+        } finally {
+            node.end(call);
         }
     }
 
@@ -392,6 +426,101 @@ public final class ClusterSpace implements Capi {
         if (outcome.status == Outcome.Status.NOT_FOUND || outcome.status == Outcome.Status.DESTROYED) {
             throw new ContainerNotFoundException("no container " + container + " (destroyed, or never created)");
         }
+    }
+
+    // ---- for servers (SpaceEngine) and programs that wait without threads (AsyncTakes) ----
+
+    /** The cluster's calls cross the network: a server runs them on pool threads. */
+    @Override
+    public boolean callsMayBlock() {
+        return true;
+    }
+
+    /** Every member's server hands out crefs with this space's URI, so they work on every member. */
+    @Override
+    public boolean sharedUri() {
+        return true;
+    }
+
+    @Override
+    public Removal removeWithReceipt(ContainerRef container, Operation operation, Timeout timeout,
+                                     Selector... selectors) {
+        Outcome outcome = retrieveOutcome(removal(operation), container, timeout, selectors);
+        return new ClusterRemoval(this, container.id(), outcome.entries, outcome.removed);
+    }
+
+    private static ContainerCall.Kind removal(Operation operation) {
+        return switch (operation) {
+            case TAKE -> ContainerCall.Kind.TAKE;
+            case DESTROY -> ContainerCall.Kind.DESTROY;
+            default -> throw new IllegalArgumentException("only take and destroy remove entries: " + operation);
+        };
+    }
+
+    @Override
+    public long sequence(ContainerRef container) {
+        String id = resolve(container);
+        Outcome outcome = node.call(name, id, ContainerCall.describe(), allowance(), uri);
+        failIfMissing(outcome, container);
+        return outcome.sequence;
+    }
+
+    @Override
+    public Pending readLater(ContainerRef container, Timeout timeout, Selector[] selectors,
+                             Completion<List<Entry>> done) {
+        return later(ContainerCall.Kind.READ, container, timeout, selectors, outcome -> outcome.entries, done);
+    }
+
+    @Override
+    public Pending removeLater(ContainerRef container, Operation operation, Timeout timeout, Selector[] selectors,
+                               Completion<Removal> done) {
+        return later(removal(operation), container, timeout, selectors,
+                outcome -> new ClusterRemoval(this, container.id(), outcome.entries, outcome.removed), done);
+    }
+
+    @Override
+    public Pending writeLater(ContainerRef container, Timeout timeout, List<Item> items, Completion<Void> done) {
+        String id = resolve(container);
+        Objects.requireNonNull(timeout, "timeout");
+        Objects.requireNonNull(done, "done");
+        List<Item> copy = List.copyOf(items);
+        return new AsyncWaiter<Void>(this, id, container, timeout, (call, wait) -> ContainerCall.write(call, copy,
+                wait), outcome -> null, done).start();
+    }
+
+    /** In-process, a take needs no receipt: the entries are the result. */
+    @Override
+    public Pending takeLater(ContainerRef container, Timeout timeout, Selector[] selectors,
+                             Completion<List<Entry>> done) {
+        return later(ContainerCall.Kind.TAKE, container, timeout, selectors, outcome -> outcome.entries, done);
+    }
+
+    @Override
+    public Pending shiftThenTakeLater(ContainerRef shiftTo, List<Item> items, ContainerRef takeFrom, Timeout timeout,
+                                      Selector[] selectors, Completion<List<Entry>> done) {
+        shift(shiftTo, timeout, items);
+        return takeLater(takeFrom, timeout, selectors, done);
+    }
+
+    private <T> Pending later(ContainerCall.Kind kind, ContainerRef container, Timeout timeout, Selector[] selectors,
+                              java.util.function.Function<Outcome, T> result, Completion<T> done) {
+        String id = resolve(container);
+        Objects.requireNonNull(timeout, "timeout");
+        Objects.requireNonNull(done, "done");
+        Selector[] chain = checkedSelectors(selectors);
+        return new AsyncWaiter<>(this, id, container, timeout,
+                (call, wait) -> ContainerCall.retrieve(kind, call, chain, wait), result, done).start();
+    }
+
+    void track(AsyncWaiter<?> waiter) {
+        waitingWithoutThreads.add(waiter);
+        if (closed) {
+            waiter.giveUp(new SpaceClosedException("the space handle is closed"));
+        }
+    }
+
+    void untrack(AsyncWaiter<?> waiter) {
+        waitingWithoutThreads.remove(waiter);
     }
 
     // ---- notifications ----
@@ -466,6 +595,9 @@ public final class ClusterSpace implements Capi {
         closed = true;
         for (LocalWaiter waiter : waiting) {
             waiter.close();
+        }
+        for (AsyncWaiter<?> waiter : List.copyOf(waitingWithoutThreads)) {
+            waiter.giveUp(new SpaceClosedException("the space handle was closed while waiting"));
         }
         for (ClusterSubscription subscription : List.copyOf(subscriptions)) {
             subscription.endedBy(robotworld.space.SubscriptionEnd.SPACE_CLOSED);

@@ -18,6 +18,7 @@ import com.hazelcast.nio.serialization.IdentifiedDataSerializable;
 
 import robotworld.space.Item;
 import robotworld.space.Selector;
+import robotworld.space.internal.PlacedEntry;
 
 /**
  * One call on one container, run by Hazelcast on the member that owns the container's partition, on that
@@ -39,6 +40,8 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
         READ, TAKE, DESTROY, WRITE, SHIFT, COLLECT, WITHDRAW, WITHDRAW_AND_UNDO, ACKNOWLEDGE, SUBSCRIBE, UNSUBSCRIBE,
         /** Drops the calling member's subscriptions numbered below {@link #after}. */
         UNSUBSCRIBE_OLDER,
+        /** Puts removed entries ({@link #restoring}) back: an undone take or destroy. */
+        RESTORE,
         DESCRIBE, READ_JOURNAL, DESTROY_CONTAINER, FORGET_MEMBERS
     }
 
@@ -56,6 +59,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
     private List<OpId> targets = List.of();
     private long after;
     private Set<UUID> live = Set.of();
+    private List<PlacedEntry> restoring = List.of();
 
     private transient List<Change> changes;
 
@@ -105,6 +109,12 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
     static ContainerCall acknowledge(OpId call, List<OpId> waiters) {
         ContainerCall c = new ContainerCall(Kind.ACKNOWLEDGE, call);
         c.targets = waiters;
+        return c;
+    }
+
+    static ContainerCall restore(OpId call, List<PlacedEntry> removed) {
+        ContainerCall c = new ContainerCall(Kind.RESTORE, call);
+        c.restoring = removed;
         return c;
     }
 
@@ -216,6 +226,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             case SUBSCRIBE -> rules.subscribe(target);
             case UNSUBSCRIBE -> rules.unsubscribe(target);
             case UNSUBSCRIBE_OLDER -> rules.unsubscribeOlder(call.member(), after);
+            case RESTORE -> rules.restore(call, restoring);
             case DESCRIBE -> rules.describe();
             case READ_JOURNAL -> rules.readJournal(after, targets);
             case DESTROY_CONTAINER -> rules.destroy();
@@ -265,6 +276,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
         for (UUID member : live) {
             Codec.writeUuid(out, member);
         }
+        Codec.writePlacedList(out, restoring);
     }
 
     @Override
@@ -291,6 +303,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
                 live.add(Codec.readUuid(in));
             }
         }
+        restoring = Codec.readPlacedList(in);
     }
 
     @Override

@@ -53,7 +53,7 @@ final class ContainerRules {
                 if (kind.mutates()) {
                     serve();
                 }
-                return done(completion.entries());
+                return done(completion);
             }
         } catch (InvalidOperationException e) {
             return invalid(e);
@@ -159,7 +159,18 @@ final class ContainerRules {
         if (!completion.succeeded()) {
             return Outcome.invalid(completion.failure());
         }
-        return done(completion.entries());
+        return done(completion);
+    }
+
+    /**
+     * Puts removed entries back where they were (an undone take or destroy), announced as a write; if they do not
+     * fit now, they wait first in the queue, so they are never lost while the container exists.
+     */
+    Outcome restore(OpId call, List<PlacedEntry> removed) {
+        undo(new Completion(entriesOfPlaced(removed), removed, null, now), call);
+        serve();
+        outcome.status = Outcome.Status.DONE;
+        return outcome;
     }
 
     // ---- notifications ----
@@ -414,6 +425,12 @@ final class ContainerRules {
     private Outcome done(List<Entry> entries) {
         outcome.status = Outcome.Status.DONE;
         outcome.entries = entries;
+        return outcome;
+    }
+
+    private Outcome done(Completion completion) {
+        done(completion.entries());
+        outcome.removed = completion.removed();
         return outcome;
     }
 

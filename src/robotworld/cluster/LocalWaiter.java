@@ -5,16 +5,24 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * The member-side half of a queued operation: the thread that waits for it sleeps here until a wake-up says the
- * container served it (or it is time to look anyway), then collects the result from the container.
+ * container served it (or it is time to look anyway), then collects the result from the container. An operation
+ * that waits without a thread ({@link AsyncWaiter}) is called back instead.
  */
 final class LocalWaiter {
 
     private final OpId id;
     private final Semaphore signals = new Semaphore(0);
+    /** For an operation waiting without a thread: what a wake-up runs (it must not block). */
+    private final Runnable onWake;
     private volatile boolean closed;
 
     LocalWaiter(OpId id) {
+        this(id, null);
+    }
+
+    LocalWaiter(OpId id, Runnable onWake) {
         this.id = id;
+        this.onWake = onWake;
     }
 
     OpId id() {
@@ -23,13 +31,17 @@ final class LocalWaiter {
 
     /** The container may have served it: look. */
     void wake() {
-        signals.release();
+        if (onWake != null) {
+            onWake.run();
+        } else {
+            signals.release();
+        }
     }
 
     /** Its space handle was closed: stop waiting. */
     void close() {
         closed = true;
-        signals.release();
+        wake();
     }
 
     boolean isClosed() {

@@ -13,6 +13,7 @@ import com.hazelcast.nio.serialization.IdentifiedDataSerializable;
 
 import robotworld.space.ContainerSpec;
 import robotworld.space.Entry;
+import robotworld.space.internal.PlacedEntry;
 
 /**
  * What a call on a container did, as the owning member answers it: a status and the result, plus the effects the
@@ -45,6 +46,8 @@ final class Outcome implements IdentifiedDataSerializable {
 
     Status status;
     List<Entry> entries = List.of();
+    /** For a take or destroy: the removed entries with their places, so that the removal can be undone. */
+    List<PlacedEntry> removed = List.of();
     String message;
     /** Waiting operations the call served (or failed): their members wake their threads to collect the result. */
     List<OpId> wakes = List.of();
@@ -119,6 +122,7 @@ final class Outcome implements IdentifiedDataSerializable {
     public void writeData(ObjectDataOutput out) throws IOException {
         out.writeByte(status.ordinal());
         Codec.writeEntries(out, entries);
+        Codec.writePlacedList(out, removed);
         out.writeString(message);
         out.writeInt(wakes.size());
         for (OpId wake : wakes) {
@@ -148,6 +152,7 @@ final class Outcome implements IdentifiedDataSerializable {
     public void readData(ObjectDataInput in) throws IOException {
         status = Status.values()[in.readByte()];
         entries = Codec.readEntries(in);
+        removed = Codec.readPlacedList(in);
         message = in.readString();
         int wakeCount = in.readInt();
         if (wakeCount > 0) {

@@ -81,6 +81,28 @@ public interface SpaceEngine extends Capi {
      */
     Pending writeLater(ContainerRef container, Timeout timeout, List<Item> items, Completion<Void> done);
 
+    /**
+     * Whether this engine's calls may block their thread for a while (a clustered engine's calls cross the
+     * network): a server then runs each request on a pool thread, not on the thread that read it. The in-process
+     * engine's calls never block.
+     *
+     * @return false unless overridden
+     */
+    default boolean callsMayBlock() {
+        return false;
+    }
+
+    /**
+     * Whether {@link #spaceUri()} names this space wherever it is served (a clustered engine is served by each of
+     * its members): servers then hand out crefs with it unchanged, so that a cref from one server works on all of
+     * them. Otherwise a server's crefs carry its own URL.
+     *
+     * @return false unless overridden
+     */
+    default boolean sharedUri() {
+        return false;
+    }
+
     /** Where the outcome of an operation started with one of the {@code ...Later} methods goes. */
     interface Completion<T> {
 

@@ -20,7 +20,7 @@ class ClusterCapiTest extends CapiContractSuite {
 
     @BeforeAll
     static void startCluster() {
-        cluster = LocalCluster.start(3);
+        cluster = LocalCluster.startPatient(3);
     }
 
     @AfterAll

@@ -25,10 +25,10 @@ import robotworld.space.Timeout;
  */
 final class RotatingCapi implements Capi {
 
-    private final List<ClusterSpace> handles;
+    private final List<? extends Capi> handles;
     private final AtomicInteger next = new AtomicInteger();
 
-    RotatingCapi(List<ClusterSpace> handles) {
+    RotatingCapi(List<? extends Capi> handles) {
         this.handles = List.copyOf(handles);
     }
 
@@ -99,7 +99,7 @@ final class RotatingCapi implements Capi {
 
     @Override
     public void close() {
-        for (ClusterSpace handle : handles) {
+        for (Capi handle : handles) {
             handle.close();
         }
     }

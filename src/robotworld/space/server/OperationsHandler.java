@@ -19,7 +19,8 @@ import robotworld.space.wire.WireReader;
  * {@code POST <path>/<operation>}: runs one operation of the wire protocol, as a Jetty core handler that never
  * blocks. The request is answered on the thread that completes it: at once for an operation that can happen at
  * once, otherwise by whoever makes it possible (a write or shift on another request's thread, the space's timer,
- * a cancel). The request's body has already arrived when this runs (an {@code EagerContentHandler} in front), so a
+ * a cancel). An engine whose calls may block (a cluster's cross the network) gets each request on a pool thread
+ * instead. The request's body has already arrived when this runs (an {@code EagerContentHandler} in front), so a
  * slow sender holds no thread. Because nothing here blocks, Jetty runs it on the thread that read the request,
  * without a hand-off; the other requests ({@code GET <path>}, the notification streams) go to the servlet on a
  * pool thread.
@@ -65,6 +66,17 @@ final class OperationsHandler extends Handler.Wrapper {
             });
             return true;
         }
+        if (state.space.callsMayBlock()) {
+            // an engine whose calls cross the network (a cluster): never block the thread that reads requests
+            getServer().getThreadPool().execute(() -> operate(path, request, response, callback));
+        } else {
+            operate(path, request, response, callback);
+        }
+        return true;
+    }
+
+    /** Runs one operation request; answers it (at once, or later from the thread that completes it). */
+    private void operate(String path, Request request, Response response, Callback callback) {
         Exchange exchange = new Exchange(response, callback, state.wire);
         try {
             if (state.token != null && !state.token.accepts(request.getHeaders().get(HttpHeader.AUTHORIZATION))) {
@@ -110,7 +122,6 @@ final class OperationsHandler extends Handler.Wrapper {
         } catch (RuntimeException e) {
             exchange.fail(e);
         }
-        return true;
     }
 
     private void run(String name, byte[] body, String acks, Exchange exchange) {

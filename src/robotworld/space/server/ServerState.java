@@ -10,7 +10,10 @@ import robotworld.space.wire.WireContext;
 final class ServerState {
 
     final SpaceEngine space;
+    /** The URL clients use. */
     final URI publicUri;
+    /** The URI crefs carry on the wire: the public URL, or the space's own URI when it is the same on every server. */
+    final URI crefUri;
     final WireContext wire;
     final SpaceServer.Options options;
     final BearerToken token;
@@ -25,6 +28,7 @@ final class ServerState {
     ServerState(SpaceEngine space, URI publicUri, WireContext wire, SpaceServer.Options options) {
         this.space = space;
         this.publicUri = publicUri;
+        this.crefUri = space.sharedUri() ? space.spaceUri() : publicUri;
         this.wire = wire;
         this.options = options;
         this.token = options.token() == null ? null : new BearerToken(options.token());

@@ -107,7 +107,9 @@ public final class SpaceServer implements AutoCloseable {
                 : URI.create("http://" + uriHost(options.bindAddress()) + ":" + port + options.path());
         boolean ownsSpace = space == null;
         SpaceEngine served = ownsSpace ? EmbeddedSpace.open(publicUri, options.notificationQueue()) : space;
-        WireContext wire = WireContext.of(options.limits(), CrefMapping.between(served.spaceUri(), publicUri));
+        // crefs carry the server's URL, unless the space has one URI on every server in front of it (a cluster)
+        URI crefUri = served.sharedUri() ? served.spaceUri() : publicUri;
+        WireContext wire = WireContext.of(options.limits(), CrefMapping.between(served.spaceUri(), crefUri));
         ServerState state = new ServerState(served, publicUri, wire, options);
         if (!ownsSpace) {
             state.sessions.adopt(ParkedSessions.adopt(served)); // left by a server that stopped gracefully

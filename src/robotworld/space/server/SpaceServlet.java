@@ -82,7 +82,7 @@ final class SpaceServlet extends HttpServlet {
         ByteArrayOutputStream body = new ByteArrayOutputStream(256);
         try (WireWriter out = state.wire.writer(body)) {
             out.startObject()
-                    .field("space", state.publicUri.toString())
+                    .field("space", state.crefUri.toString())
                     .field("maxWait", state.options.maxWaitMillis())
                     .field("heartbeat", state.options.heartbeatMillis())
                     .field("lease", state.options.leaseMillis())
