@@ -465,24 +465,45 @@ public final class SafetySupervisor implements AutoCloseable {
         }
     }
 
-    /** Queues a shift of {@code items} into a safety container; best effort, never on a caller's path. */
+    /** Pauses before the attempts to publish a stop record or answer: a busy space gets a few seconds. */
+    private static final long[] PUBLISH_RETRY_MILLIS = {200, 1_000, 3_000};
+
+    /**
+     * Queues a shift of {@code items} into a safety container, on the link thread, never on a caller's path; an
+     * attempt that fails is repeated a few times (a record that never arrives leaves a monitor without the reason of
+     * a stop), while the program is closing only within the close's grace.
+     */
     private void publish(String container, List<Item> items) {
+        publish(container, items, 0);
+    }
+
+    private void publish(String container, List<Item> items, int attempt) {
         if (space == null || link.isShutdown()) {
             return;
         }
-        try {
-            link.execute(() -> {
-                try {
-                    ContainerRef ref = switch (container) {
-                        case SafetyContainers.STOPS -> SafetyContainers.stops(space);
-                        case SafetyContainers.STOP_ANSWERS -> SafetyContainers.stopAnswers(space);
-                        default -> throw new IllegalArgumentException(container);
-                    };
-                    space.shift(ref, Timeout.ofMillis(CLOSE_GRACE_MILLIS), items);
-                } catch (SpaceException e) {
-                    LOG.debug("cannot publish into {}: {}", container, e.toString());
+        Runnable shift = () -> {
+            try {
+                ContainerRef ref = switch (container) {
+                    case SafetyContainers.STOPS -> SafetyContainers.stops(space);
+                    case SafetyContainers.STOP_ANSWERS -> SafetyContainers.stopAnswers(space);
+                    default -> throw new IllegalArgumentException(container);
+                };
+                space.shift(ref, Timeout.ofMillis(closed ? CLOSE_GRACE_MILLIS : 5_000), items);
+            } catch (SpaceException e) {
+                if (!closed && attempt < PUBLISH_RETRY_MILLIS.length) {
+                    publish(container, items, attempt + 1);
+                } else {
+                    LOG.warn("{} could not publish {} entr(ies) into {}: {}", ownId, items.size(), container,
+                            e.toString());
                 }
-            });
+            }
+        };
+        try {
+            if (attempt == 0) {
+                link.execute(shift);
+            } else {
+                link.schedule(shift, PUBLISH_RETRY_MILLIS[attempt - 1], TimeUnit.MILLISECONDS);
+            }
         } catch (java.util.concurrent.RejectedExecutionException closing) {
             // the program has ended
         }

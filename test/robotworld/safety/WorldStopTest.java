@@ -137,8 +137,7 @@ class WorldStopTest {
             robot.awaitLine("READY", START);
             WorldStop.Result result = WorldStop.stop(ops, "ops-laptop (test)", "why not", List.of(
                     new WorldStop.Target(SafetyRig.ROBOT, SafetyRig.MOTOR, true)), Duration.ofSeconds(30));
-            eventually("the record", () -> !CleanExitTest.stopRecords(ops, 1).isEmpty());
-            StopRecord record = CleanExitTest.stopRecords(ops, 1).get(0);
+            StopRecord record = CleanExitTest.stopRecords(ops, 1).get(0); // waits for it
             assertEquals(StopCause.STOP_REQUEST, record.cause());
             assertEquals(result.request().id(), record.request());
             assertEquals("asked by ops-laptop (test): why not", record.reason());
