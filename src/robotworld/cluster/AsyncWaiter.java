@@ -295,6 +295,7 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
             case INVALID -> finish(null, new InvalidOperationException(outcome.message));
             case DESTROYED, NOT_FOUND -> finish(null, new ContainerDestroyedException("container " + ref
                     + " was destroyed while waiting"));
+            case CANCELLED -> finish(null, new robotworld.space.CallCancelledException(outcome.message));
             default -> finish(null, new SpaceException("the cluster failed a call on " + ref + ": "
                     + outcome.message));
         }

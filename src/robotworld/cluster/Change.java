@@ -167,6 +167,31 @@ sealed interface Change {
         }
     }
 
+    record ReceiptPut(String call, Receipt receipt) implements Change {
+        @Override
+        public void apply(ContainerRecord record) {
+            record.putReceipt(call, receipt);
+        }
+
+        @Override
+        public void write(ObjectDataOutput out) throws IOException {
+            out.writeString(call);
+            receipt.write(out);
+        }
+    }
+
+    record ReceiptRemoved(String call) implements Change {
+        @Override
+        public void apply(ContainerRecord record) {
+            record.removeReceipt(call);
+        }
+
+        @Override
+        public void write(ObjectDataOutput out) throws IOException {
+            out.writeString(call);
+        }
+    }
+
     record Destroyed() implements Change {
         @Override
         public void apply(ContainerRecord record) {
@@ -208,6 +233,10 @@ sealed interface Change {
             return 9;
         } else if (change instanceof Forgotten) {
             return 10;
+        } else if (change instanceof ReceiptPut) {
+            return 12;
+        } else if (change instanceof ReceiptRemoved) {
+            return 13;
         }
         return 11; // Destroyed
     }
@@ -238,6 +267,11 @@ sealed interface Change {
             }
             case 10 -> new Forgotten(OpId.read(in));
             case 11 -> new Destroyed();
+            case 12 -> {
+                String call = in.readString();
+                yield new ReceiptPut(call, Receipt.read(in));
+            }
+            case 13 -> new ReceiptRemoved(in.readString());
             default -> throw new IOException("unknown change tag " + tag);
         };
     }

@@ -54,6 +54,8 @@ final class ClusterNode {
     static final long FIRST_NAP_NANOS = TimeUnit.SECONDS.toNanos(1);
     /** How often every inbox checks its chain against its container's journal, in case a message was lost. */
     private static final long INBOX_CHECK_MILLIS = 5_000;
+    /** How often a member makes the containers it owns put back held removals whose lease ran out. */
+    private static final long SWEEP_MILLIS = 1_000;
 
     private final HazelcastInstance hazelcast;
     private final ClusterOptions options;
@@ -112,6 +114,7 @@ final class ClusterNode {
         });
         background.scheduleWithFixedDelay(this::checkInboxes, INBOX_CHECK_MILLIS, INBOX_CHECK_MILLIS,
                 TimeUnit.MILLISECONDS);
+        background.scheduleWithFixedDelay(this::sweepReceipts, SWEEP_MILLIS, SWEEP_MILLIS, TimeUnit.MILLISECONDS);
     }
 
     /** The node of a running member, or null. */
@@ -214,6 +217,20 @@ final class ClusterNode {
     NameRecord lookupName(String space, String name, long deadline, URI uri) {
         IMap<String, NameRecord> map = names(space);
         return retrying(() -> map.get(name), deadline, uri, "lookup of '" + name + "'");
+    }
+
+    /** The container of space {@code space} that knows client call {@code callId}, asking all of them; or null. */
+    String findReceipt(String space, String callId, long deadline, URI uri) {
+        IMap<String, ContainerRecord> map = containers(space);
+        Map<String, Outcome> answers = retrying(() -> map.executeOnEntries(
+                ContainerCall.receipts(ContainerCall.Kind.FIND_RECEIPTS, null, List.of(callId))), deadline, uri,
+                "looking for call " + callId);
+        for (Map.Entry<String, Outcome> answer : answers.entrySet()) {
+            if (answer.getValue() != null && !answer.getValue().calls.isEmpty()) {
+                return answer.getKey();
+            }
+        }
+        return null;
     }
 
     void createRecord(String space, ContainerRecord record, long deadline, URI uri) {
@@ -464,6 +481,30 @@ final class ClusterNode {
             }, delayMillis, TimeUnit.MILLISECONDS);
         } catch (RejectedExecutionException closing) {
             return null; // the member is shutting down
+        }
+    }
+
+    /**
+     * Held removals come back when their lease runs out at the next call on their container; for containers that
+     * nobody calls, each member asks the containers it owns now and then (a call that changes nothing costs no
+     * backup).
+     */
+    private void sweepReceipts() {
+        if (closed) {
+            return;
+        }
+        try {
+            for (DistributedObject object : hazelcast.getDistributedObjects()) {
+                if (object instanceof IMap<?, ?> && object.getName().startsWith(HazelcastSetup.CONTAINERS)) {
+                    IMap<String, ContainerRecord> map = containers(object.getName()
+                            .substring(HazelcastSetup.CONTAINERS.length()));
+                    for (String container : map.localKeySet()) {
+                        map.executeOnKey(container, ContainerCall.sweep());
+                    }
+                }
+            }
+        } catch (RuntimeException e) {
+            LOG.log(Level.DEBUG, "receipt sweep skipped: " + e);
         }
     }
 

@@ -23,10 +23,12 @@ import java.util.regex.Pattern;
  *                          {@link robotworld.space.SpaceUnavailableException}
  * @param failureDetection  how long a member may stay silent before the others count it as gone (a member whose
  *                          process died is noticed sooner: its connections close)
+ * @param lease             how long a take or destroy a server answered is held for its client's confirmation
+ *                          before its entries come back (in the container, so any member's server honours it)
  */
 public record ClusterOptions(String clusterName, List<String> members, String bindAddress, int port, int backups,
                              int minimumMembers, int journalCapacity, Duration callAllowance,
-                             Duration failureDetection) {
+                             Duration failureDetection, Duration lease) {
 
     /** The member port Hazelcast uses by default. */
     public static final int DEFAULT_PORT = 5701;
@@ -59,6 +61,10 @@ public record ClusterOptions(String clusterName, List<String> members, String bi
         if (failureDetection.toSeconds() < 1) {
             throw new IllegalArgumentException("failure detection must be at least 1 s: " + failureDetection);
         }
+        Objects.requireNonNull(lease, "lease");
+        if (lease.toMillis() < 10) {
+            throw new IllegalArgumentException("lease must be at least 10 ms: " + lease);
+        }
     }
 
     /**
@@ -67,47 +73,52 @@ public record ClusterOptions(String clusterName, List<String> members, String bi
      */
     public static ClusterOptions named(String clusterName) {
         return new ClusterOptions(clusterName, List.of(), "127.0.0.1", DEFAULT_PORT, 1, 0, 1024,
-                Duration.ofSeconds(3), Duration.ofSeconds(5));
+                Duration.ofSeconds(3), Duration.ofSeconds(5), Duration.ofSeconds(10));
     }
 
     public ClusterOptions withMembers(List<String> newMembers) {
         return new ClusterOptions(clusterName, newMembers, bindAddress, port, backups, minimumMembers,
-                journalCapacity, callAllowance, failureDetection);
+                journalCapacity, callAllowance, failureDetection, lease);
     }
 
     public ClusterOptions withBindAddress(String address) {
         return new ClusterOptions(clusterName, members, address, port, backups, minimumMembers, journalCapacity,
-                callAllowance, failureDetection);
+                callAllowance, failureDetection, lease);
     }
 
     public ClusterOptions withPort(int newPort) {
         return new ClusterOptions(clusterName, members, bindAddress, newPort, backups, minimumMembers,
-                journalCapacity, callAllowance, failureDetection);
+                journalCapacity, callAllowance, failureDetection, lease);
     }
 
     public ClusterOptions withBackups(int count) {
         return new ClusterOptions(clusterName, members, bindAddress, port, count, minimumMembers, journalCapacity,
-                callAllowance, failureDetection);
+                callAllowance, failureDetection, lease);
     }
 
     public ClusterOptions withMinimumMembers(int count) {
         return new ClusterOptions(clusterName, members, bindAddress, port, backups, count, journalCapacity,
-                callAllowance, failureDetection);
+                callAllowance, failureDetection, lease);
     }
 
     public ClusterOptions withJournalCapacity(int events) {
         return new ClusterOptions(clusterName, members, bindAddress, port, backups, minimumMembers, events,
-                callAllowance, failureDetection);
+                callAllowance, failureDetection, lease);
     }
 
     public ClusterOptions withCallAllowance(Duration allowance) {
         return new ClusterOptions(clusterName, members, bindAddress, port, backups, minimumMembers,
-                journalCapacity, allowance, failureDetection);
+                journalCapacity, allowance, failureDetection, lease);
     }
 
     public ClusterOptions withFailureDetection(Duration silence) {
         return new ClusterOptions(clusterName, members, bindAddress, port, backups, minimumMembers,
-                journalCapacity, callAllowance, silence);
+                journalCapacity, callAllowance, silence, lease);
+    }
+
+    public ClusterOptions withLease(Duration newLease) {
+        return new ClusterOptions(clusterName, members, bindAddress, port, backups, minimumMembers,
+                journalCapacity, callAllowance, failureDetection, newLease);
     }
 
     /** The split-brain protection minimum actually used: the given one, or a majority of the listed members. */

@@ -21,13 +21,17 @@ final class ClusterRemoval implements Removal {
     private final String container;
     private final List<Entry> entries;
     private final List<PlacedEntry> removed;
+    /** The call id of the server's client it was made for (the container holds it under that id), or null. */
+    private final String client;
     private final AtomicBoolean restored = new AtomicBoolean();
 
-    ClusterRemoval(ClusterSpace space, String container, List<Entry> entries, List<PlacedEntry> removed) {
+    ClusterRemoval(ClusterSpace space, String container, List<Entry> entries, List<PlacedEntry> removed,
+                   String client) {
         this.space = space;
         this.container = container;
         this.entries = entries;
         this.removed = removed;
+        this.client = client;
     }
 
     @Override
@@ -41,7 +45,11 @@ final class ClusterRemoval implements Removal {
             return;
         }
         try {
-            space.restore(container, removed);
+            if (client != null) {
+                space.restoreReceipt(container, client); // the container holds it: put back from there, once
+            } else {
+                space.restore(container, removed);
+            }
         } catch (SpaceException e) {
             LOG.log(Level.WARNING, "could not put " + entries.size() + " entries back into " + container + ": "
                     + e.getMessage());

@@ -50,6 +50,7 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
     private final Set<LocalWaiter> waiting = ConcurrentHashMap.newKeySet();
     private final Set<ClusterSubscription> subscriptions = ConcurrentHashMap.newKeySet();
     private final Set<AsyncWaiter<?>> waitingWithoutThreads = ConcurrentHashMap.newKeySet();
+    private final ClusterReceipts receipts = new ClusterReceipts(this);
     private volatile boolean closed;
 
     ClusterSpace(ClusterNode node, String name, int queueCapacity) {
@@ -418,6 +419,7 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
             case NOT_POSSIBLE -> throw new SpaceTimeoutException("not possible at once on " + container);
             case FAILED -> throw new robotworld.space.SpaceException("the cluster failed a call on " + container
                     + ": " + outcome.message);
+            case CANCELLED -> throw new robotworld.space.CallCancelledException(outcome.message);
             default -> throw new IllegalStateException("unexpected outcome " + outcome + " on " + container);
         };
     }
@@ -446,7 +448,7 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
     public Removal removeWithReceipt(ContainerRef container, Operation operation, Timeout timeout,
                                      Selector... selectors) {
         Outcome outcome = retrieveOutcome(removal(operation), container, timeout, selectors);
-        return new ClusterRemoval(this, container.id(), outcome.entries, outcome.removed);
+        return new ClusterRemoval(this, container.id(), outcome.entries, outcome.removed, null);
     }
 
     private static ContainerCall.Kind removal(Operation operation) {
@@ -468,31 +470,89 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
     @Override
     public Pending readLater(ContainerRef container, Timeout timeout, Selector[] selectors,
                              Completion<List<Entry>> done) {
-        return later(ContainerCall.Kind.READ, container, timeout, selectors, outcome -> outcome.entries, done);
+        return later(ContainerCall.Kind.READ, container, timeout, selectors, null, outcome -> outcome.entries, done);
     }
 
     @Override
     public Pending removeLater(ContainerRef container, Operation operation, Timeout timeout, Selector[] selectors,
                                Completion<Removal> done) {
-        return later(removal(operation), container, timeout, selectors,
-                outcome -> new ClusterRemoval(this, container.id(), outcome.entries, outcome.removed), done);
+        return removeLater(container, operation, timeout, selectors, null, done);
+    }
+
+    /** With a client's call id, the removal is held in its container under that id until it is confirmed. */
+    @Override
+    public Pending removeLater(ContainerRef container, Operation operation, Timeout timeout, Selector[] selectors,
+                               String callId, Completion<Removal> done) {
+        if (callId != null) {
+            receipts.made(callId, resolve(container), true);
+        }
+        return later(removal(operation), container, timeout, selectors, callId,
+                outcome -> new ClusterRemoval(this, container.id(), outcome.entries, outcome.removed, callId), done);
     }
 
     @Override
     public Pending writeLater(ContainerRef container, Timeout timeout, List<Item> items, Completion<Void> done) {
+        return writeLater(container, timeout, items, null, done);
+    }
+
+    /** With a client's call id, the container remembers under it that the write happened. */
+    @Override
+    public Pending writeLater(ContainerRef container, Timeout timeout, List<Item> items, String callId,
+                              Completion<Void> done) {
         String id = resolve(container);
         Objects.requireNonNull(timeout, "timeout");
         Objects.requireNonNull(done, "done");
         List<Item> copy = List.copyOf(items);
-        return new AsyncWaiter<Void>(this, id, container, timeout, (call, wait) -> ContainerCall.write(call, copy,
-                wait), outcome -> null, done).start();
+        if (callId != null) {
+            receipts.made(callId, id, false);
+        }
+        return new AsyncWaiter<Void>(this, id, container, timeout, (call, wait) -> forClient(ContainerCall.write(call,
+                copy, wait), callId), outcome -> null, done).start();
+    }
+
+    /** With a client's call id, the container remembers under it that the shift happened, and what it displaced. */
+    @Override
+    public List<Entry> shift(ContainerRef container, Timeout timeout, List<Item> items, String callId) {
+        if (callId == null) {
+            return shift(container, timeout, items);
+        }
+        String id = resolve(container);
+        Objects.requireNonNull(timeout, "timeout");
+        List<Item> copy = List.copyOf(items);
+        receipts.made(callId, id, false);
+        Outcome outcome = once(id, call -> forClient(ContainerCall.shift(call, copy), callId), allowance());
+        return result(outcome, container);
+    }
+
+    @Override
+    public robotworld.space.CallReceipts receipts() {
+        return receipts;
+    }
+
+    private ContainerCall forClient(ContainerCall call, String callId) {
+        return callId == null ? call : call.forClient(callId, node.options().lease().toMillis());
+    }
+
+    /** A call about the receipts of several client calls on container {@code id}. */
+    Outcome receiptsCall(String id, ContainerCall.Kind kind, List<String> callIds) {
+        return once(id, call -> ContainerCall.receipts(kind, call, callIds), allowance());
+    }
+
+    /** A call about the receipt of one client call on container {@code id}. */
+    Outcome receiptCall(String id, ContainerCall.Kind kind, String callId) {
+        return once(id, call -> ContainerCall.receipt(kind, call, callId), allowance());
+    }
+
+    /** The container that knows client call {@code callId}, asking all of this space's containers; or null. */
+    String findReceipt(String callId) {
+        return node.findReceipt(name, callId, allowance(), uri);
     }
 
     /** In-process, a take needs no receipt: the entries are the result. */
     @Override
     public Pending takeLater(ContainerRef container, Timeout timeout, Selector[] selectors,
                              Completion<List<Entry>> done) {
-        return later(ContainerCall.Kind.TAKE, container, timeout, selectors, outcome -> outcome.entries, done);
+        return later(ContainerCall.Kind.TAKE, container, timeout, selectors, null, outcome -> outcome.entries, done);
     }
 
     @Override
@@ -503,13 +563,19 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
     }
 
     private <T> Pending later(ContainerCall.Kind kind, ContainerRef container, Timeout timeout, Selector[] selectors,
-                              java.util.function.Function<Outcome, T> result, Completion<T> done) {
+                              String callId, java.util.function.Function<Outcome, T> result, Completion<T> done) {
         String id = resolve(container);
         Objects.requireNonNull(timeout, "timeout");
         Objects.requireNonNull(done, "done");
         Selector[] chain = checkedSelectors(selectors);
         return new AsyncWaiter<>(this, id, container, timeout,
-                (call, wait) -> ContainerCall.retrieve(kind, call, chain, wait), result, done).start();
+                (call, wait) -> forClient(ContainerCall.retrieve(kind, call, chain, wait), callId), result, done)
+                .start();
+    }
+
+    /** Puts the held removal of client call {@code callId} back into container {@code id}. */
+    void restoreReceipt(String id, String callId) {
+        receiptCall(id, ContainerCall.Kind.RESTORE_RECEIPT, callId);
     }
 
     void track(AsyncWaiter<?> waiter) {

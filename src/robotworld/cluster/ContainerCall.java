@@ -42,6 +42,18 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
         UNSUBSCRIBE_OLDER,
         /** Puts removed entries ({@link #restoring}) back: an undone take or destroy. */
         RESTORE,
+        /** The clients confirmed these takes ({@link #clients}): their held removals stand. */
+        ACK_RECEIPTS,
+        /** Puts the held removal of client call {@link #client} back. */
+        RESTORE_RECEIPT,
+        /** Whether the write or shift of client call {@link #client} happened; forgets it. */
+        TAKE_COMPLETED,
+        /** Makes sure client call {@link #client} never takes effect. */
+        FORBID,
+        /** Which of the client calls {@link #clients} this container knows. */
+        FIND_RECEIPTS,
+        /** Puts back held removals whose lease ran out (for a container nobody calls). */
+        SWEEP,
         DESCRIBE, READ_JOURNAL, DESTROY_CONTAINER, FORGET_MEMBERS
     }
 
@@ -60,6 +72,11 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
     private long after;
     private Set<UUID> live = Set.of();
     private List<PlacedEntry> restoring = List.of();
+    /** The call id of the server's client this call runs for, or null. */
+    private String client;
+    private List<String> clients = List.of();
+    /** How long a removal for a client is held for its confirmation. */
+    private long leaseMillis;
 
     private transient List<Change> changes;
 
@@ -145,6 +162,31 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
         return this;
     }
 
+    /** This call on behalf of a server's client whose call id is {@code id}; removals are held {@code lease} ms. */
+    ContainerCall forClient(String id, long lease) {
+        this.client = id;
+        this.leaseMillis = lease;
+        return this;
+    }
+
+    /** A call about the receipts of client calls: ACK_RECEIPTS or FIND_RECEIPTS of {@code ids}. */
+    static ContainerCall receipts(Kind kind, OpId call, List<String> ids) {
+        ContainerCall c = new ContainerCall(kind, call);
+        c.clients = ids;
+        return c;
+    }
+
+    /** A call about the receipt of one client call: RESTORE_RECEIPT, TAKE_COMPLETED or FORBID. */
+    static ContainerCall receipt(Kind kind, OpId call, String id) {
+        ContainerCall c = new ContainerCall(kind, call);
+        c.client = id;
+        return c;
+    }
+
+    static ContainerCall sweep() {
+        return new ContainerCall(Kind.SWEEP, null);
+    }
+
     Kind kind() {
         return kind;
     }
@@ -172,9 +214,11 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
         Outcome outcome;
         try {
             long now = System.currentTimeMillis();
-            ContainerRules rules = new ContainerRules(record, now, new Outcome());
+            ContainerRules rules = new ContainerRules(record, now, new Outcome(), leaseMillis);
             if (call != null) {
                 rules.collectGarbage(call.member(), lowWater);
+            } else if (kind == Kind.SWEEP) {
+                rules.expireReceipts();
             }
             try {
                 outcome = run(record, rules);
@@ -209,16 +253,20 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
                 case ACKNOWLEDGE -> rules.acknowledge(targets);
                 case READ_JOURNAL -> rules.readJournal(after, targets);
                 case FORGET_MEMBERS -> rules.forgetMembers(live);
-                case UNSUBSCRIBE, UNSUBSCRIBE_OLDER -> Outcome.of(Outcome.Status.DONE);
+                case UNSUBSCRIBE, UNSUBSCRIBE_OLDER, ACK_RECEIPTS, RESTORE_RECEIPT, SWEEP ->
+                        Outcome.of(Outcome.Status.DONE);
+                case TAKE_COMPLETED -> rules.takeCompleted(client);
+                case FORBID -> Outcome.of(Outcome.Status.DONE); // the container went, and the call with it
+                case FIND_RECEIPTS -> rules.findReceipts(clients);
                 default -> Outcome.of(Outcome.Status.DESTROYED);
             };
         }
         return switch (kind) {
-            case READ -> rules.retrieve(call, WaiterRecord.Kind.READ, selectors, waitMillis);
-            case TAKE -> rules.retrieve(call, WaiterRecord.Kind.TAKE, selectors, waitMillis);
-            case DESTROY -> rules.retrieve(call, WaiterRecord.Kind.DESTROY, selectors, waitMillis);
-            case WRITE -> rules.write(call, items, waitMillis);
-            case SHIFT -> rules.shift(items);
+            case READ -> rules.retrieve(call, WaiterRecord.Kind.READ, selectors, waitMillis, client);
+            case TAKE -> rules.retrieve(call, WaiterRecord.Kind.TAKE, selectors, waitMillis, client);
+            case DESTROY -> rules.retrieve(call, WaiterRecord.Kind.DESTROY, selectors, waitMillis, client);
+            case WRITE -> rules.write(call, items, waitMillis, client);
+            case SHIFT -> rules.shift(items, client);
             case COLLECT -> rules.collect(target);
             case WITHDRAW -> rules.withdraw(target, false);
             case WITHDRAW_AND_UNDO -> rules.withdraw(target, true);
@@ -227,6 +275,12 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             case UNSUBSCRIBE -> rules.unsubscribe(target);
             case UNSUBSCRIBE_OLDER -> rules.unsubscribeOlder(call.member(), after);
             case RESTORE -> rules.restore(call, restoring);
+            case ACK_RECEIPTS -> rules.acknowledgeReceipts(clients);
+            case RESTORE_RECEIPT -> rules.restoreReceipt(client);
+            case TAKE_COMPLETED -> rules.takeCompleted(client);
+            case FORBID -> rules.forbid(client);
+            case FIND_RECEIPTS -> rules.findReceipts(clients);
+            case SWEEP -> Outcome.of(Outcome.Status.DONE);
             case DESCRIBE -> rules.describe();
             case READ_JOURNAL -> rules.readJournal(after, targets);
             case DESTROY_CONTAINER -> rules.destroy();
@@ -277,6 +331,12 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             Codec.writeUuid(out, member);
         }
         Codec.writePlacedList(out, restoring);
+        out.writeString(client);
+        out.writeInt(clients.size());
+        for (String id : clients) {
+            out.writeString(id);
+        }
+        out.writeLong(leaseMillis);
     }
 
     @Override
@@ -304,6 +364,15 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             }
         }
         restoring = Codec.readPlacedList(in);
+        client = in.readString();
+        int clientCount = in.readInt();
+        if (clientCount > 0) {
+            clients = new ArrayList<>(clientCount);
+            for (int i = 0; i < clientCount; i++) {
+                clients.add(in.readString());
+            }
+        }
+        leaseMillis = in.readLong();
     }
 
     @Override

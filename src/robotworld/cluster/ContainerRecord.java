@@ -45,6 +45,8 @@ final class ContainerRecord implements IdentifiedDataSerializable {
     private final Set<OpId> subscribers = new LinkedHashSet<>();
     private final ArrayDeque<Event> journal = new ArrayDeque<>();
     private final Map<OpId, Done> done = new HashMap<>();
+    /** By client call id, oldest first. */
+    private final Map<String, Receipt> receipts = new LinkedHashMap<>();
     private boolean destroyed;
     private List<Change> log;
 
@@ -142,6 +144,10 @@ final class ContainerRecord implements IdentifiedDataSerializable {
         return done;
     }
 
+    Map<String, Receipt> receipts() {
+        return receipts;
+    }
+
     boolean destroyed() {
         return destroyed;
     }
@@ -217,6 +223,18 @@ final class ContainerRecord implements IdentifiedDataSerializable {
         }
     }
 
+    void putReceipt(String call, Receipt receipt) {
+        receipts.remove(call); // a newer receipt goes last, in time order
+        receipts.put(call, receipt);
+        log(new Change.ReceiptPut(call, receipt));
+    }
+
+    void removeReceipt(String call) {
+        if (receipts.remove(call) != null) {
+            log(new Change.ReceiptRemoved(call));
+        }
+    }
+
     /** Empties the container for good; completions and the journal stay for late collectors and subscribers. */
     void markDestroyed() {
         destroyed = true;
@@ -271,6 +289,11 @@ final class ContainerRecord implements IdentifiedDataSerializable {
             out.writeLong(call.getValue().at());
         }
         out.writeBoolean(destroyed);
+        out.writeInt(receipts.size());
+        for (Map.Entry<String, Receipt> receipt : receipts.entrySet()) {
+            out.writeString(receipt.getKey());
+            receipt.getValue().write(out);
+        }
     }
 
     @Override
@@ -308,6 +331,11 @@ final class ContainerRecord implements IdentifiedDataSerializable {
             done.put(call, new Done(outcome, in.readLong()));
         }
         destroyed = in.readBoolean();
+        int receiptCount = in.readInt();
+        for (int i = 0; i < receiptCount; i++) {
+            String call = in.readString();
+            receipts.put(call, Receipt.read(in));
+        }
     }
 
     @Override

@@ -30,26 +30,41 @@ final class ContainerRules {
     /** How long a served operation's result waits to be collected before it is undone as abandoned. */
     static final long UNCOLLECTED_AFTER_MILLIS = 120_000;
 
+    /** How long receipts of completed and cancelled calls are kept, and how many at most per container. */
+    static final long RECEIPT_KEPT_MILLIS = 120_000;
+    static final int MAX_RECEIPTS = 10_000;
+
     private final ContainerRecord record;
     private final ContainerContents contents;
     private final long now;
     private final Outcome outcome;
+    /** How long a removal for a server's client is held for its confirmation. */
+    private final long leaseMillis;
 
-    ContainerRules(ContainerRecord record, long now, Outcome outcome) {
+    ContainerRules(ContainerRecord record, long now, Outcome outcome, long leaseMillis) {
         this.record = record;
         this.contents = record.contents();
         this.now = now;
         this.outcome = outcome;
+        this.leaseMillis = leaseMillis;
     }
 
     // ---- operations ----
 
-    /** A read, take or destroy: done now, queued, or not possible. */
-    Outcome retrieve(OpId call, WaiterRecord.Kind kind, Selector[] selectors, long waitMillis) {
+    /**
+     * A read, take or destroy: done now, queued, or not possible. With a client call id ({@code client}), a take or
+     * destroy is held under it until confirmed ({@link Receipt}), and a call cancelled before it came is refused.
+     */
+    Outcome retrieve(OpId call, WaiterRecord.Kind kind, Selector[] selectors, long waitMillis, String client) {
+        Outcome settled = settledAlready(client);
+        if (settled != null) {
+            return settled;
+        }
         try {
             ContainerContents.checkSelectors(record.spec(), selectors);
             Completion completion = attempt(kind, selectors, List.of(), List.of());
             if (completion != null) {
+                receipt(client, kind, completion);
                 if (kind.mutates()) {
                     serve();
                 }
@@ -58,17 +73,23 @@ final class ContainerRules {
         } catch (InvalidOperationException e) {
             return invalid(e);
         }
-        return queueOrRefuse(new WaiterRecord(call, kind, selectors, List.of(), List.of(), expiry(waitMillis)),
-                waitMillis);
+        return queueOrRefuse(new WaiterRecord(call, kind, selectors, List.of(), List.of(), expiry(waitMillis),
+                client), waitMillis);
     }
 
-    Outcome write(OpId call, List<Item> items, long waitMillis) {
+    Outcome write(OpId call, List<Item> items, long waitMillis, String client) {
+        Outcome settled = settledAlready(client);
+        if (settled != null) {
+            return settled;
+        }
         try {
             ContainerContents.checkWrite(record.spec(), items);
             if (items.isEmpty()) {
                 return done(List.of());
             }
-            if (attempt(WaiterRecord.Kind.WRITE, new Selector[0], items, List.of()) != null) {
+            Completion completion = attempt(WaiterRecord.Kind.WRITE, new Selector[0], items, List.of());
+            if (completion != null) {
+                receipt(client, WaiterRecord.Kind.WRITE, completion);
                 serve();
                 return done(List.of());
             }
@@ -76,10 +97,14 @@ final class ContainerRules {
             return invalid(e);
         }
         return queueOrRefuse(new WaiterRecord(call, WaiterRecord.Kind.WRITE, new Selector[0], items, List.of(),
-                expiry(waitMillis)), waitMillis);
+                expiry(waitMillis), client), waitMillis);
     }
 
-    Outcome shift(List<Item> items) {
+    Outcome shift(List<Item> items, String client) {
+        Outcome settled = settledAlready(client);
+        if (settled != null) {
+            return settled;
+        }
         List<Entry> displaced;
         try {
             ContainerContents.checkItems(record.spec(), items);
@@ -91,8 +116,152 @@ final class ContainerRules {
             return invalid(e);
         }
         publish(Operation.SHIFT, entriesOf(items), displaced);
+        if (client != null) {
+            record.putReceipt(client, Receipt.done(displaced, now));
+        }
         serve();
         return done(displaced);
+    }
+
+    // ---- receipts of a server's clients ----
+
+    /**
+     * What a client's call that the container already knows gets: refused if it was cancelled before it came; the
+     * same answer again if it happened (a write, a shift, or a take still held): null for a call it does not know.
+     */
+    private Outcome settledAlready(String client) {
+        if (client == null) {
+            return null;
+        }
+        Receipt receipt = record.receipts().get(client);
+        if (receipt == null) {
+            return null;
+        }
+        return switch (receipt.kind()) {
+            case FORBIDDEN -> {
+                record.removeReceipt(client);
+                Outcome refused = Outcome.of(Outcome.Status.CANCELLED);
+                refused.message = "call " + client + " was cancelled";
+                yield refused;
+            }
+            case DONE -> done(receipt.displaced());
+            case HELD -> {
+                Outcome again = done(entriesOfPlaced(receipt.held()));
+                again.removed = receipt.held();
+                yield again;
+            }
+        };
+    }
+
+    /** Keeps what a client's call did under its id: a held removal, or a write that happened. */
+    private void receipt(String client, WaiterRecord.Kind kind, Completion completion) {
+        if (client == null || !completion.succeeded()) {
+            return;
+        }
+        if (kind == WaiterRecord.Kind.TAKE || kind == WaiterRecord.Kind.DESTROY) {
+            if (!completion.removed().isEmpty()) {
+                record.putReceipt(client, Receipt.held(completion.removed(), now, leaseMillis));
+            }
+        } else if (kind == WaiterRecord.Kind.WRITE) {
+            record.putReceipt(client, Receipt.done(List.of(), now));
+        }
+    }
+
+    /** The clients confirmed these takes: their removals stand. */
+    Outcome acknowledgeReceipts(List<String> clients) {
+        for (String client : clients) {
+            Receipt receipt = record.receipts().get(client);
+            if (receipt != null && receipt.kind() == Receipt.Kind.HELD) {
+                record.removeReceipt(client);
+            }
+        }
+        return Outcome.of(Outcome.Status.DONE);
+    }
+
+    /** Puts a held removal back (its call was cancelled); {@code happened} says whether there was one. */
+    Outcome restoreReceipt(String client) {
+        Receipt receipt = record.receipts().get(client);
+        Outcome restored = Outcome.of(Outcome.Status.DONE);
+        if (receipt != null && receipt.kind() == Receipt.Kind.HELD) {
+            record.removeReceipt(client);
+            undoHeld(client, receipt);
+            serve();
+            restored = outcome;
+            restored.status = Outcome.Status.DONE;
+            restored.happened = true;
+        }
+        return restored;
+    }
+
+    /** Whether a write or shift of the client happened: with what it displaced; forgets it. */
+    Outcome takeCompleted(String client) {
+        Receipt receipt = record.receipts().get(client);
+        Outcome answer = Outcome.of(Outcome.Status.DONE);
+        if (receipt != null && receipt.kind() == Receipt.Kind.DONE) {
+            record.removeReceipt(client);
+            answer.happened = true;
+            answer.entries = receipt.displaced();
+        }
+        return answer;
+    }
+
+    /**
+     * Makes sure a client's call never takes effect: one that happened meanwhile is reported ({@code happened},
+     * with what a shift displaced); a held removal is put back; a queued one is withdrawn; and the call is refused
+     * if it still comes.
+     */
+    Outcome forbid(String client) {
+        Receipt receipt = record.receipts().get(client);
+        if (receipt != null && receipt.kind() == Receipt.Kind.DONE) {
+            record.removeReceipt(client);
+            Outcome happened = Outcome.of(Outcome.Status.DONE);
+            happened.happened = true;
+            happened.entries = receipt.displaced();
+            return happened;
+        }
+        if (receipt != null && receipt.kind() == Receipt.Kind.HELD) {
+            undoHeld(client, receipt);
+        }
+        for (WaiterRecord waiter : List.copyOf(record.waiters())) {
+            if (client.equals(waiter.client())) {
+                record.removeWaiter(waiter.id());
+            }
+        }
+        record.putReceipt(client, Receipt.forbidden(now));
+        serve();
+        outcome.status = Outcome.Status.DONE;
+        return outcome;
+    }
+
+    /** Which of these client calls the container knows (a receipt, or a queued operation). */
+    Outcome findReceipts(List<String> clients) {
+        List<String> known = new ArrayList<>();
+        for (String client : clients) {
+            if (record.receipts().containsKey(client) || isQueued(client)) {
+                known.add(client);
+            }
+        }
+        Outcome found = Outcome.of(Outcome.Status.DONE);
+        found.calls = known;
+        return found;
+    }
+
+    private boolean isQueued(String client) {
+        for (WaiterRecord waiter : record.waiters()) {
+            if (client.equals(waiter.client())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Puts a held removal's entries back (its lease ran out, or its call was cancelled); the caller removed its
+     * receipt. If they do not fit now they wait first in the queue, under an id made from the client's call id.
+     */
+    private void undoHeld(String client, Receipt receipt) {
+        OpId id = new OpId(UUID.nameUUIDFromBytes(client.getBytes(java.nio.charset.StandardCharsets.UTF_8)), -1);
+        undo(new Completion(entriesOfPlaced(receipt.held()), receipt.held(), null, now), id);
     }
 
     private Outcome queueOrRefuse(WaiterRecord waiter, long waitMillis) {
@@ -283,7 +452,37 @@ final class ContainerRules {
     }
 
     /** Drops what has been abandoned: outcomes of long-finished calls, results nobody collected (undone). */
+    /**
+     * Puts back held removals whose lease ran out, and forgets receipts of completed and cancelled calls after a
+     * while (and beyond {@link #MAX_RECEIPTS}).
+     */
+    void expireReceipts() {
+        if (record.receipts().isEmpty()) {
+            return;
+        }
+        List<Map.Entry<String, Receipt>> due = new ArrayList<>();
+        int surplus = record.receipts().size() - MAX_RECEIPTS;
+        for (Map.Entry<String, Receipt> receipt : record.receipts().entrySet()) {
+            Receipt value = receipt.getValue();
+            boolean expired = value.kind() == Receipt.Kind.HELD ? value.expiresAt() <= now
+                    : now - value.at() > RECEIPT_KEPT_MILLIS || surplus-- > 0;
+            if (expired) {
+                due.add(receipt);
+            }
+        }
+        for (Map.Entry<String, Receipt> receipt : due) {
+            record.removeReceipt(receipt.getKey());
+            if (receipt.getValue().kind() == Receipt.Kind.HELD) {
+                undoHeld(receipt.getKey(), receipt.getValue()); // nobody confirmed it: the entries come back
+            }
+        }
+        if (!due.isEmpty() && !record.destroyed()) {
+            serve();
+        }
+    }
+
     void collectGarbage(UUID caller, long lowWater) {
+        expireReceipts();
         if (!record.done().isEmpty()) {
             List<OpId> finished = new ArrayList<>();
             for (Map.Entry<OpId, ContainerRecord.Done> call : record.done().entrySet()) {
@@ -377,6 +576,12 @@ final class ContainerRules {
                 record.removeWaiter(waiter.id());
                 i--;
                 if (waiter.kind() != WaiterRecord.Kind.RESTORE) {
+                    if (waiter.client() != null) {
+                        receipt(waiter.client(), waiter.kind(), completion);
+                        // the receipt holds the entries now: undoing the completion must not put them back twice
+                        completion = new Completion(completion.entries(), List.of(), completion.failure(),
+                                completion.at());
+                    }
                     record.putCompletion(waiter.id(), completion);
                     outcome.addWake(waiter.id());
                 }
@@ -406,7 +611,7 @@ final class ContainerRules {
             publish(Operation.WRITE, entriesOfPlaced(completion.removed()), List.of());
         } else {
             record.addWaiter(new WaiterRecord(waiter, WaiterRecord.Kind.RESTORE, new Selector[0], List.of(),
-                    completion.removed(), Long.MAX_VALUE), true);
+                    completion.removed(), Long.MAX_VALUE, null), true);
         }
     }
 

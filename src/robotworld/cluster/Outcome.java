@@ -41,7 +41,9 @@ final class Outcome implements IdentifiedDataSerializable {
         /** The container knows no such waiter. */
         UNKNOWN,
         /** The call failed on the owner for a reason of its own ({@link #message}); what it changed is kept. */
-        FAILED
+        FAILED,
+        /** Its client cancelled it before it arrived: refused, no effect. */
+        CANCELLED
     }
 
     Status status;
@@ -63,6 +65,10 @@ final class Outcome implements IdentifiedDataSerializable {
     int subscriptions;
     /** Journal reads: whether the events continue the chain from the asked point without a gap. */
     boolean complete;
+    /** Receipt searches: the client call ids of those asked about that this container knows. */
+    List<String> calls = List.of();
+    /** A receipt query: whether the call it asked about had taken effect (a write or shift), with what it displaced. */
+    boolean happened;
 
     Outcome() {
     }
@@ -146,6 +152,11 @@ final class Outcome implements IdentifiedDataSerializable {
         out.writeInt(blocked);
         out.writeInt(subscriptions);
         out.writeBoolean(complete);
+        out.writeInt(calls.size());
+        for (String call : calls) {
+            out.writeString(call);
+        }
+        out.writeBoolean(happened);
     }
 
     @Override
@@ -184,6 +195,14 @@ final class Outcome implements IdentifiedDataSerializable {
         blocked = in.readInt();
         subscriptions = in.readInt();
         complete = in.readBoolean();
+        int callCount = in.readInt();
+        if (callCount > 0) {
+            calls = new ArrayList<>(callCount);
+            for (int i = 0; i < callCount; i++) {
+                calls.add(in.readString());
+            }
+        }
+        happened = in.readBoolean();
     }
 
     @Override

@@ -20,9 +20,10 @@ import robotworld.space.internal.PlacedEntry;
  * @param items     for a write
  * @param restoring for a restoration, the entries to put back
  * @param expiresAt when the owner may drop it as abandoned (owner's clock; its member gives up well before)
+ * @param client    the call id of the server's client it runs for, or null: its receipt is kept under it
  */
 record WaiterRecord(OpId id, Kind kind, Selector[] selectors, List<Item> items, List<PlacedEntry> restoring,
-                    long expiresAt) {
+                    long expiresAt, String client) {
 
     /** What a waiter does when it is served. */
     enum Kind {
@@ -42,6 +43,7 @@ record WaiterRecord(OpId id, Kind kind, Selector[] selectors, List<Item> items, 
         Codec.writeItems(out, items);
         Codec.writePlacedList(out, restoring);
         out.writeLong(expiresAt);
+        out.writeString(client);
     }
 
     static WaiterRecord read(ObjectDataInput in) throws IOException {
@@ -50,6 +52,7 @@ record WaiterRecord(OpId id, Kind kind, Selector[] selectors, List<Item> items, 
         Selector[] selectors = Codec.readSelectors(in);
         List<Item> items = Codec.readItems(in);
         List<PlacedEntry> restoring = Codec.readPlacedList(in);
-        return new WaiterRecord(id, kind, selectors, items, restoring, in.readLong());
+        long expiresAt = in.readLong();
+        return new WaiterRecord(id, kind, selectors, items, restoring, expiresAt, in.readString());
     }
 }

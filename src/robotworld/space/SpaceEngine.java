@@ -103,6 +103,50 @@ public interface SpaceEngine extends Capi {
         return false;
     }
 
+    /**
+     * Where servers keep what they promised the clients of this space about calls with ids (held removals, writes
+     * that happened, cancelled calls), or null: each server keeps them itself, with this space. A space served by
+     * several servers at once (a cluster) keeps them itself, so that any of its servers honours them.
+     *
+     * @return null unless overridden
+     */
+    default CallReceipts receipts() {
+        return null;
+    }
+
+    /**
+     * {@link #removeLater} for the call {@code callId} of a server's client (null: none). A space that keeps
+     * receipts ({@link #receipts()}) holds the removal under that id until it is confirmed, and refuses a call that
+     * was cancelled before it arrived ({@link CallCancelledException}); others ignore the id.
+     *
+     * @return a handle to withdraw the removal while it waits
+     */
+    default Pending removeLater(ContainerRef container, Operation operation, Timeout timeout, Selector[] selectors,
+                                String callId, Completion<Removal> done) {
+        return removeLater(container, operation, timeout, selectors, done);
+    }
+
+    /**
+     * {@link #writeLater} for the call {@code callId} of a server's client (null: none); see
+     * {@link #removeLater(ContainerRef, Operation, Timeout, Selector[], String, Completion)}.
+     *
+     * @return a handle to withdraw the write while it waits
+     */
+    default Pending writeLater(ContainerRef container, Timeout timeout, List<Item> items, String callId,
+                               Completion<Void> done) {
+        return writeLater(container, timeout, items, done);
+    }
+
+    /**
+     * {@link #shift} for the call {@code callId} of a server's client (null: none); see
+     * {@link #removeLater(ContainerRef, Operation, Timeout, Selector[], String, Completion)}.
+     *
+     * @return the displaced entries
+     */
+    default List<Entry> shift(ContainerRef container, Timeout timeout, List<Item> items, String callId) {
+        return shift(container, timeout, items);
+    }
+
     /** Where the outcome of an operation started with one of the {@code ...Later} methods goes. */
     interface Completion<T> {
 

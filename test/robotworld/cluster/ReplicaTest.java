@@ -98,14 +98,24 @@ class ReplicaTest {
     private ContainerCall randomCall(Random random, ContainerSpec spec) {
         UUID member = random.nextBoolean() ? MEMBER_A : MEMBER_B;
         OpId call = next(member);
-        int choice = random.nextInt(14);
+        int choice = random.nextInt(19);
         long wait = random.nextInt(3) == 0 ? 0 : random.nextBoolean() ? -1 : 60_000;
+        String client = random.nextBoolean() ? "client:" + random.nextInt(30) : null; // ids repeat on purpose
+        long lease = random.nextInt(4) == 0 ? 1 : 60_000; // some leases run out at once
         return switch (choice) {
-            case 0, 1, 2 -> ContainerCall.write(call, randomItems(random, spec), wait);
-            case 3 -> ContainerCall.shift(call, randomItems(random, spec));
-            case 4, 5 -> ContainerCall.retrieve(ContainerCall.Kind.TAKE, call, randomSelectors(random, spec), wait);
+            case 0, 1, 2 -> forClient(ContainerCall.write(call, randomItems(random, spec), wait), client, lease);
+            case 3 -> forClient(ContainerCall.shift(call, randomItems(random, spec)), client, lease);
+            case 4, 5 -> forClient(ContainerCall.retrieve(ContainerCall.Kind.TAKE, call, randomSelectors(random,
+                    spec), wait), client, lease);
             case 6 -> ContainerCall.retrieve(ContainerCall.Kind.READ, call, randomSelectors(random, spec), wait);
-            case 7 -> ContainerCall.retrieve(ContainerCall.Kind.DESTROY, call, randomSelectors(random, spec), wait);
+            case 7 -> forClient(ContainerCall.retrieve(ContainerCall.Kind.DESTROY, call, randomSelectors(random,
+                    spec), wait), client, lease);
+            case 14 -> ContainerCall.receipts(ContainerCall.Kind.ACK_RECEIPTS, call,
+                    List.of("client:" + random.nextInt(30)));
+            case 15 -> ContainerCall.receipt(ContainerCall.Kind.RESTORE_RECEIPT, call, "client:" + random.nextInt(30));
+            case 16 -> ContainerCall.receipt(ContainerCall.Kind.TAKE_COMPLETED, call, "client:" + random.nextInt(30));
+            case 17 -> ContainerCall.receipt(ContainerCall.Kind.FORBID, call, "client:" + random.nextInt(30));
+            case 18 -> ContainerCall.sweep();
             case 8 -> waiters.isEmpty() ? ContainerCall.describe()
                     : ContainerCall.about(ContainerCall.Kind.COLLECT, call, pick(random, waiters));
             case 9 -> waiters.isEmpty() ? ContainerCall.describe()
@@ -121,6 +131,10 @@ class ReplicaTest {
                     MEMBER_B));
             default -> ContainerCall.acknowledge(call, waiters.isEmpty() ? List.of() : List.of(pick(random, waiters)));
         };
+    }
+
+    private static ContainerCall forClient(ContainerCall call, String client, long lease) {
+        return client == null ? call : call.forClient(client, lease);
     }
 
     private static OpId pick(Random random, List<OpId> ids) {
@@ -183,6 +197,39 @@ class ReplicaTest {
         assertEquals(first.entries, second.entries);
         assertEquals(after, state(pair.owner), "not applied twice");
         assertNull(again.getBackupProcessor(), "nothing to back up");
+    }
+
+    @Test
+    void aClientsTakeIsHeldUntilConfirmedAndACancelFromAnyMemberPutsItBack() {
+        Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO), 8));
+        pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(1)), Item.of(Entry.of(2))), 0));
+        Outcome taken = pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, next(MEMBER_A), new Selector[0], 0)
+                .forClient("k:1", 60_000));
+        assertEquals(List.of(Entry.of(1)), taken.entries);
+        Outcome again = pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, next(MEMBER_B), new Selector[0], 0)
+                .forClient("k:1", 60_000));
+        assertEquals(List.of(Entry.of(1)), again.entries, "the same call again gets the same held entries");
+        assertEquals(1, pair.owner.contents().size(), "and takes nothing more");
+        Outcome forbidden = pair.run(ContainerCall.receipt(ContainerCall.Kind.FORBID, next(MEMBER_B), "k:1"));
+        assertTrue(!forbidden.happened, "a take is undone, not reported as done");
+        assertEquals(2, pair.owner.contents().size(), "the cancelled take's entry is back");
+        Outcome late = pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, next(MEMBER_A), new Selector[0], 0)
+                .forClient("k:1", 60_000));
+        assertEquals(Outcome.Status.CANCELLED, late.status, "the cancelled call is refused if it comes again");
+        assertEquals(state(pair.owner), state(pair.backup));
+    }
+
+    @Test
+    void aClientsWriteIsReportedOnceToACancel() {
+        Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO).bounded(1), 8));
+        pair.run(ContainerCall.shift(next(MEMBER_A), List.of(Item.of(Entry.of(1)))).forClient("k:2", 60_000));
+        Outcome shifted = pair.run(ContainerCall.shift(next(MEMBER_A), List.of(Item.of(Entry.of(2))))
+                .forClient("k:3", 60_000));
+        assertEquals(List.of(Entry.of(1)), shifted.entries);
+        Outcome asked = pair.run(ContainerCall.receipt(ContainerCall.Kind.FORBID, next(MEMBER_B), "k:3"));
+        assertTrue(asked.happened, "it happened");
+        assertEquals(List.of(Entry.of(1)), asked.entries, "with what it displaced");
+        assertEquals(state(pair.owner), state(pair.backup));
     }
 
     @Test
@@ -307,7 +354,8 @@ class ReplicaTest {
             done.put(call.getKey().toString(), call.getValue().outcome().toString());
         }
         state.append('\n').append("done ").append(done).append('\n');
-        state.append("destroyed ").append(record.destroyed());
+        state.append("destroyed ").append(record.destroyed()).append('\n');
+        state.append("receipts ").append(record.receipts());
         return state.toString();
     }
 }

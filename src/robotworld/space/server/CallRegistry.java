@@ -1,11 +1,12 @@
 package robotworld.space.server;
 
-import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
+import robotworld.space.CallReceipts;
 import robotworld.space.SpaceEngine;
 
 /**
@@ -20,17 +21,15 @@ import robotworld.space.SpaceEngine;
  */
 final class CallRegistry {
 
-    /** How long an early cancel is remembered, and how many at most. */
-    private static final long TOMBSTONE_NANOS = TimeUnit.SECONDS.toNanos(60);
-    private static final int MAX_TOMBSTONES = 10_000;
-
     private final Map<String, InFlight> running = new ConcurrentHashMap<>();
     private final java.util.concurrent.atomic.AtomicLong anonymous = new java.util.concurrent.atomic.AtomicLong();
-    private final Map<String, Long> tombstones = new LinkedHashMap<>();
-    /** Recent writes that happened, kept with the space, so a late cancel can be told that they happened. */
-    private final SpaceReceipts receipts;
+    /**
+     * Recent writes that happened and calls cancelled before they arrived, kept with the space, so a late cancel can
+     * be told that a write happened, and a late call refused.
+     */
+    private final CallReceipts receipts;
 
-    CallRegistry(SpaceReceipts receipts) {
+    CallRegistry(CallReceipts receipts) {
         this.receipts = receipts;
     }
 
@@ -45,10 +44,8 @@ final class CallRegistry {
      * @param onWithdrawn answers the call's request when a cancel withdrew its operation from the space
      */
     InFlight begin(String id, Runnable onWithdrawn) {
-        synchronized (tombstones) {
-            if (tombstones.remove(id) != null) {
-                return null;
-            }
+        if (receipts.isForbidden(id)) {
+            return null;
         }
         InFlight call = new InFlight(id, onWithdrawn);
         if (running.putIfAbsent(id, call) != null) {
@@ -94,7 +91,7 @@ final class CallRegistry {
     void done(InFlight call, boolean tookEffect) {
         call.tookEffect = tookEffect;
         if (tookEffect && !call.id.startsWith("~")) {
-            receipts.writeCompleted(call.id);
+            receipts.completed(call.id, List.of());
         }
         running.remove(call.id, call);
         call.settled.countDown();
@@ -122,14 +119,7 @@ final class CallRegistry {
 
     /** Whether {@code id} was cancelled before it arrived; forgets the cancel. */
     boolean isForbidden(String id) {
-        synchronized (tombstones) {
-            return !tombstones.isEmpty() && tombstones.remove(id) != null;
-        }
-    }
-
-    /** Makes sure a call that has not arrived (it may still be on its way) never runs. */
-    void forbid(String id) {
-        remember(id);
+        return receipts.isForbidden(id);
     }
 
     /** What a cancelled call did. */
@@ -169,17 +159,6 @@ final class CallRegistry {
         }
         if (pending != null && pending.cancel()) {
             call.onWithdrawn.run();
-        }
-    }
-
-    private void remember(String id) {
-        long now = System.nanoTime();
-        synchronized (tombstones) {
-            tombstones.values().removeIf(at -> now - at > TOMBSTONE_NANOS);
-            if (tombstones.size() >= MAX_TOMBSTONES) {
-                tombstones.remove(tombstones.keySet().iterator().next());
-            }
-            tombstones.put(id, now);
         }
     }
 

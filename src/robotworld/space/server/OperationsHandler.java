@@ -157,7 +157,7 @@ final class OperationsHandler extends Handler.Wrapper {
             if (++count > MAX_ACKS_PER_REQUEST) {
                 throw new ErrorAnswer(WireError.BAD_REQUEST, "more than " + MAX_ACKS_PER_REQUEST + " acks in one request");
             }
-            state.leases.acknowledge(RequestFields.id(id.trim(), Wire.ACK_HEADER));
+            state.receipts.acknowledge(RequestFields.id(id.trim(), Wire.ACK_HEADER));
         }
     }
 }

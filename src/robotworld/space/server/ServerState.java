@@ -3,6 +3,7 @@ package robotworld.space.server;
 import java.net.URI;
 import java.util.concurrent.Semaphore;
 
+import robotworld.space.CallReceipts;
 import robotworld.space.SpaceEngine;
 import robotworld.space.wire.WireContext;
 
@@ -17,9 +18,9 @@ final class ServerState {
     final WireContext wire;
     final SpaceServer.Options options;
     final BearerToken token;
-    final SpaceReceipts receipts;
+    /** Held removals, completed writes, cancelled calls: kept by the space itself if it can, else with it here. */
+    final CallReceipts receipts;
     final CallRegistry calls;
-    final LeaseTable leases;
     final SessionRegistry sessions;
     /** Bounds the calls that wait inside the space at once (each holds a small object, not a thread). */
     final Semaphore waitingPermits;
@@ -32,9 +33,8 @@ final class ServerState {
         this.wire = wire;
         this.options = options;
         this.token = options.token() == null ? null : new BearerToken(options.token());
-        this.receipts = SpaceReceipts.of(space);
+        this.receipts = space.receipts() != null ? space.receipts() : SpaceReceipts.of(space);
         this.calls = new CallRegistry(receipts);
-        this.leases = receipts.leases;
         this.sessions = new SessionRegistry(options.maxSessions(), options.sessionQueue());
         this.waitingPermits = new Semaphore(options.maxWaitingCalls());
     }

@@ -66,7 +66,7 @@ final class SpaceOperations {
             case "destroyContainer" -> state.space.destroyContainer(in.required(in.container, "container"));
             case "describe" -> describe(in, out);
             case "shift" -> shift(in, out);
-            case "ack" -> in.required(in.calls, "calls").forEach(state.leases::acknowledge);
+            case "ack" -> in.required(in.calls, "calls").forEach(state.receipts::acknowledge);
             case "cancel" -> cancel(in.required(in.call, "call"), out);
             case "subscribe" -> subscribe(in, out);
             case "unsubscribe" -> unsubscribe(in);
@@ -143,7 +143,7 @@ final class SpaceOperations {
                 @Override
                 public void completed(Object result) {
                     if (operation == Operation.WRITE && in.call != null) {
-                        state.receipts.writeCompleted(in.call); // so a client whose answer is lost can learn it
+                        state.receipts.completed(in.call, List.of()); // so a client whose answer is lost can learn it
                     }
                     step.done(result);
                 }
@@ -346,9 +346,9 @@ final class SpaceOperations {
         return switch (operation) {
             case READ -> state.space.readLater(container, wait, in.selectors,
                     (SpaceEngine.Completion<List<Entry>>) (SpaceEngine.Completion<?>) done);
-            case TAKE, DESTROY -> state.space.removeLater(container, operation, wait, in.selectors,
+            case TAKE, DESTROY -> state.space.removeLater(container, operation, wait, in.selectors, in.call,
                     (SpaceEngine.Completion<Removal>) (SpaceEngine.Completion<?>) done);
-            case WRITE -> state.space.writeLater(container, wait, in.items, new SpaceEngine.Completion<>() {
+            case WRITE -> state.space.writeLater(container, wait, in.items, in.call, new SpaceEngine.Completion<>() {
                 @Override
                 public void completed(Void nothing) {
                     done.completed(Boolean.TRUE);
@@ -369,7 +369,7 @@ final class SpaceOperations {
         if (result instanceof Removal removal) {
             entries = removal.entries();
             if (callId != null && !entries.isEmpty()) {
-                state.leases.hold(callId, removal, state.options.leaseMillis());
+                state.receipts.hold(callId, removal, state.options.leaseMillis());
                 out.field("ack", true);
             }
         } else if (result instanceof List<?> list) {
@@ -390,7 +390,7 @@ final class SpaceOperations {
         }
         // the calls this shift completes are answered on this thread, inside the shift, before this answer
         List<Entry> displaced = state.space.shift(in.required(in.container, "container"),
-                in.required(in.timeout, "timeout"), in.required(in.items, "items"));
+                in.required(in.timeout, "timeout"), in.required(in.items, "items"), in.call);
         if (in.call != null) {
             state.receipts.completed(in.call, displaced); // a client whose answer is lost can ask
         }
@@ -405,13 +405,13 @@ final class SpaceOperations {
         CallRegistry.Outcome outcome = state.calls.cancelRunning(callId);
         List<Entry> displaced = state.receipts.takeCompleted(callId);
         if (outcome == null) {
-            if (state.leases.restore(callId)) {
+            if (state.receipts.restore(callId)) {
                 outcome = CallRegistry.Outcome.CANCELLED;
             } else if (displaced != null) {
                 outcome = CallRegistry.Outcome.COMPLETED;
             } else {
-                state.calls.forbid(callId);
-                outcome = CallRegistry.Outcome.CANCELLED;
+                displaced = state.receipts.forbid(callId); // the space may find that it happened meanwhile
+                outcome = displaced != null ? CallRegistry.Outcome.COMPLETED : CallRegistry.Outcome.CANCELLED;
             }
         }
         if (outcome == CallRegistry.Outcome.COMPLETED) {

@@ -179,7 +179,7 @@ public final class SpaceServer implements AutoCloseable {
 
     /** Unconfirmed takes currently held by the server (for monitoring and tests). */
     public int pendingAcknowledgements() {
-        return state.leases.size();
+        return state.receipts.held();
     }
 
     /**

@@ -87,6 +87,9 @@ public enum WireError {
         if (failure instanceof SpaceClosedException) {
             return SPACE_CLOSED;
         }
+        if (failure instanceof robotworld.space.CallCancelledException) {
+            return CANCELLED;
+        }
         return INTERNAL;
     }
 
