@@ -250,6 +250,7 @@ class WorldViewTest {
         for (Monitor each : monitor.monitors()) {
             if (each.getPanel() instanceof robotworld.explorer.monitor.gui.ModulePanel modulePanel
                     && !(modulePanel instanceof IRDistanceModulePanel)) {
+                onEdt(() -> showTabOf(modulePanel, window)); // a panel in a hidden tab paints black
                 screenshot(modulePanel, "docs-panel-" + modulePanel.moduleClass());
             }
         }
@@ -265,6 +266,17 @@ class WorldViewTest {
         } catch (robotworld.xvsm.ActuatorStoppedException stopped) {
             call.run();
         }
+    }
+
+    /** Selects, in every tabbed pane above {@code component}, the tab it is on, and lays the window out again. */
+    private static Void showTabOf(java.awt.Component component, java.awt.Window window) {
+        for (java.awt.Component child = component; child.getParent() != null; child = child.getParent()) {
+            if (child.getParent() instanceof javax.swing.JTabbedPane tabs) {
+                tabs.setSelectedComponent(child);
+            }
+        }
+        window.validate();
+        return null;
     }
 
     private static Point2D onRing(Point2D centre, double radius, double degrees) {
