@@ -121,7 +121,7 @@ public final class SimulatedCm11a implements AutoCloseable {
     public synchronized String listen(int port) throws IOException {
         LoopbackServer server = new LoopbackServer(port, "cm11a-sim", this::serveTcp);
         servers.add(server);
-        LOG.info("simulated CM11A listening on tcp://127.0.0.1:{}", server.port());
+        LOG.debug("simulated CM11A listening on tcp://127.0.0.1:{}", server.port());
         return "tcp://127.0.0.1:" + server.port();
     }
 
