@@ -35,9 +35,9 @@ import robotworld.telemetry.SafetyTelemetry;
  * progress line, until Ctrl-C or the duration; {@code rwe record --info FILE.mcap} says what a recording holds.
  */
 @Command(name = "record", mixinStandardHelpOptions = true,
-        description = {"Record a running RobotWorld's traffic into an MCAP file (see docs/recording.md):",
-                "every module's requests, answers and errors, participant liveness, stops, gaps, and the",
-                "simulated robots' ground truth. Ends on Ctrl-C or after --duration, leaving a finished file.",
+        description = {"Record a running RobotWorld's traffic into an MCAP file (see docs/recording.md): "
+                + "every module's requests, answers and errors, participant liveness, stops, gaps, and the "
+                + "simulated robots' ground truth. Ends on Ctrl-C or after --duration, leaving a finished file.",
                 "With --info FILE: print what a recording holds (channels, counts, time range)."})
 final class RecordCommand implements Callable<Integer> {
 

@@ -47,12 +47,39 @@ public final class Rwe implements Callable<Integer> {
     /** Runs the command line with the given output and error writers; returns the exit code. */
     public static int run(PrintWriter out, PrintWriter err, String... args) {
         CommandLine commandLine = new CommandLine(new Rwe()).setOut(out).setErr(err);
+        joinDescriptionLines(commandLine);
         commandLine.setParameterExceptionHandler(Rwe::usageError);
         commandLine.setExecutionExceptionHandler((exception, line, parseResult) -> {
             reportFailure(exception, line);
             return 1;
         });
         return commandLine.execute(args);
+    }
+
+    /**
+     * Descriptions are written in the source as lines of about 100 characters; picocli prints each element on a line
+     * of its own and wraps it at 80, which leaves stubs of a word or two. Lines of one sentence are joined into one
+     * paragraph (a line ending a sentence or a list item ends it) so that picocli wraps whole paragraphs.
+     */
+    private static void joinDescriptionLines(CommandLine line) {
+        var usage = line.getCommandSpec().usageMessage();
+        java.util.List<String> paragraphs = new java.util.ArrayList<>();
+        StringBuilder paragraph = new StringBuilder();
+        for (String each : usage.description()) {
+            if (paragraph.length() > 0) {
+                paragraph.append(' ');
+            }
+            paragraph.append(each.strip());
+            if (each.endsWith(".") || each.endsWith(":") || each.endsWith(")") && !each.contains("(see")) {
+                paragraphs.add(paragraph.toString());
+                paragraph.setLength(0);
+            }
+        }
+        if (paragraph.length() > 0) {
+            paragraphs.add(paragraph.toString());
+        }
+        usage.description(paragraphs.toArray(String[]::new));
+        line.getSubcommands().values().forEach(Rwe::joinDescriptionLines);
     }
 
     /** A usage error: the message in words, then where the usage is, never the usage itself. */
