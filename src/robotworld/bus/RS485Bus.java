@@ -261,7 +261,11 @@ public final class RS485Bus implements Closeable {
         return master.pacing();
     }
 
-    /** Listens for late replies for {@code window}, reporting them to the stray-frame listener. */
+    /**
+     * Listens for late replies, reporting them to the stray-frame listener: at least {@code window}, and on until
+     * the late-reply window (four reply timeouts) of every unanswered request has closed, or all those replies
+     * have come.
+     */
     public void listenForStrays(Duration window) {
         master.listenForStrays(window, Pdus.readDeviceIdentification());
     }

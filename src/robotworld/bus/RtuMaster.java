@@ -26,7 +26,9 @@ import robotworld.bus.modbus.RtuTiming;
  * all eight both answer {@code 02 01 xx}), so an unanswered request leaves a debt: the reply is <em>owed</em> until
  * it arrives or until the late-reply window ({@value #LATE_REPLY_TIMEOUTS} reply timeouts after the request) has
  * passed, and that address is not asked anything new before. Owed replies that arrive are discarded as
- * <em>stale</em>; the other addresses are not held up (their replies are told apart by address).
+ * <em>stale</em>; the other addresses are not held up (their replies are told apart by address). A write's
+ * confirmation names the register and value it confirms, so one that comes later still (a busy machine can
+ * outlast any window) is recognised by its content and never answers another write.
  */
 final class RtuMaster {
 
@@ -233,12 +235,19 @@ final class RtuMaster {
     }
 
     /**
-     * Listens for {@code window} and reports every valid frame to the stray listener: how bus exploration hears
-     * late replies to its last requests.
+     * Listens for late replies and reports every valid frame to the stray listener: how bus exploration hears late
+     * replies to its last requests. Listens at least {@code window}, and on while a reply is owed whose late-reply
+     * window is still open ({@value #LATE_REPLY_TIMEOUTS} reply timeouts after its request), so a module answering
+     * the last addresses of a scan late is given the same time as any other; it ends early once nothing is owed.
      */
     synchronized void listenForStrays(Duration window, byte[] lastRequestPdu) {
         settlePending();
         long deadline = System.nanoTime() + window.toNanos();
+        for (int address = 0; address < owed.length; address++) {
+            if (owed[address] > 0 && owedUntil[address] - deadline > 0) {
+                deadline = owedUntil[address];
+            }
+        }
         FrameLength length = FrameLengths.responseTo(lastRequestPdu);
         // frame by frame, so the window can close early once no address owes a reply any more
         while (anyReplyOwed() && readReply(-1, lastRequestPdu, length, deadline).kind() != Kind.TIMEOUT) {
@@ -374,6 +383,10 @@ final class RtuMaster {
                     stray(frame);
                     continue;
                 }
+                if (confirmsAnotherWrite(request, frame.pdu())) {
+                    staleWriteConfirmation(frame, request);
+                    continue; // ours may still come
+                }
                 if (have > 0) {
                     salvage(readUntilSilence(have)); // behind our reply: noise, or a late reply of another
                 }
@@ -404,6 +417,32 @@ final class RtuMaster {
         boolean owes = frame.address() < owed.length && owed[frame.address()] > 0
                 || pending != null && pending.address() == frame.address();
         return sameFunction && frame.address() != 0 && !owes;
+    }
+
+    /**
+     * Whether {@code response} confirms a write, but another one than {@code request}: a write is confirmed by
+     * repeating its function code, its first register or coil and its value (one item) or count (several), so a
+     * confirmation that repeats something else is the late answer to an earlier write, however late it comes.
+     */
+    static boolean confirmsAnotherWrite(byte[] request, byte[] response) {
+        int function = request[0] & 0xFF;
+        boolean write = function == FunctionCodes.WRITE_SINGLE_COIL || function == FunctionCodes.WRITE_SINGLE_REGISTER
+                || function == FunctionCodes.WRITE_MULTIPLE_COILS || function == FunctionCodes.WRITE_MULTIPLE_REGISTERS;
+        return write && (response[0] & 0xFF) == function && request.length >= 5
+                && !(response.length == 5 && Arrays.equals(request, 0, 5, response, 0, 5));
+    }
+
+    /** A late confirmation of an earlier write: discarded, no longer owed, and heard of as proof of life. */
+    private void staleWriteConfirmation(RtuFrame frame, byte[] request) {
+        int address = frame.address();
+        staleReplies.incrementAndGet();
+        if (address < owed.length && owed[address] > 0) {
+            owed[address]--;
+        }
+        strayListener.accept(frame);
+        LOG.debug("{} on {}: discarded a late confirmation of an earlier write while waiting for {}: {}",
+                describe.apply(address), link.portName(), RtuFrame.hex(request, request.length),
+                RtuFrame.hex(frame.pdu(), frame.pdu().length));
     }
 
     private Reply classify(int address, byte[] request, byte[] response) {

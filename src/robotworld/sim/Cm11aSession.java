@@ -8,6 +8,7 @@ import org.slf4j.LoggerFactory;
 import robotworld.bus.LinkClosedException;
 import robotworld.bus.SerialLink;
 import robotworld.x10.CM11aClock;
+import robotworld.x10.Hex;
 import robotworld.x10.X10Constants;
 
 /**
@@ -151,8 +152,12 @@ final class Cm11aSession implements Runnable {
         }
         send(device.checksumToSend(sum & 0xFF));
         int reply = wire.receive(timing.hostTimeout());
+        if (reply == NONE) {
+            device.wire.deviceNote("no 00 from the host: " + Hex.of(frame) + " not transmitted");
+            return NONE;
+        }
         if (reply != X10Constants.CM11A_ACK) {
-            return reply; // no acknowledge: the frame is not transmitted
+            return reply; // a new frame in place of the acknowledge: this one is not transmitted
         }
         device.wire.host(new byte[] {0});
         transmitOnPowerLine(frame);

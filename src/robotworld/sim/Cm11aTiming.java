@@ -42,10 +42,19 @@ public record Cm11aTiming(Duration characterTime, Duration powerLineTime, Durati
                 Duration.ofSeconds(1), Duration.ofSeconds(1));
     }
 
-    /** As fast as the machine allows: no pacing, no power-line time, a poll every 20 ms. For tests. */
+    /**
+     * As fast as the machine allows: no pacing, no power-line time, a poll every 20 ms. For tests. The interface
+     * waits up to {@value #FAST_HOST_TIMEOUT_SECONDS} s for the host's 0x00: a busy machine can hold the host back
+     * for longer than a real interface would wait, and a simulator that gave up then would make the host's next
+     * command fail for no fault of its own. (A host that resends a frame in place of the 0x00 is served at once.)
+     */
     public static Cm11aTiming fast() {
-        return new Cm11aTiming(Duration.ZERO, Duration.ZERO, Duration.ofMillis(20), Duration.ofMillis(500));
+        return new Cm11aTiming(Duration.ZERO, Duration.ZERO, Duration.ofMillis(20),
+                Duration.ofSeconds(FAST_HOST_TIMEOUT_SECONDS));
     }
+
+    /** How long a simulator in {@link #fast()} timing waits for the rest of a frame and for the 0x00. */
+    public static final int FAST_HOST_TIMEOUT_SECONDS = 10;
 
     /** Whether characters are paced at the baud rate. */
     public boolean isPaced() {

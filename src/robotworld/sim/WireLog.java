@@ -25,6 +25,11 @@ public final class WireLog {
         add(new WireRecord(true, bytes.clone(), why, System.nanoTime()));
     }
 
+    /** Something the interface decided without sending a byte, e.g. to give up waiting for the host. */
+    synchronized void deviceNote(String note) {
+        add(new WireRecord(false, new byte[0], note, System.nanoTime()));
+    }
+
     synchronized void device(byte[] bytes) {
         add(new WireRecord(false, bytes.clone(), "", System.nanoTime()));
     }

@@ -13,9 +13,14 @@ import robotworld.x10.Hex;
  */
 public record WireRecord(boolean fromHost, byte[] bytes, String note, long nanos) {
 
-    /** e.g. {@code host 04 62}, {@code cm11a 66}, {@code host 04 (ignored while polling)}. */
+    /**
+     * e.g. {@code host 04 62}, {@code cm11a 66}, {@code host 04 (ignored while polling)}; a record without bytes is
+     * something the interface did on its own, e.g. {@code cm11a (no 00 from the host: 04 62 not transmitted)}.
+     */
     @Override
     public String toString() {
-        return (fromHost ? "host " : "cm11a ") + Hex.of(bytes) + (note.isEmpty() ? "" : " (" + note + ")");
+        String note = this.note.isEmpty() ? "" : "(" + this.note + ")";
+        String text = bytes.length == 0 ? note : note.isEmpty() ? Hex.of(bytes) : Hex.of(bytes) + " " + note;
+        return (fromHost ? "host " : "cm11a ") + text;
     }
 }

@@ -163,10 +163,15 @@ public record CM11aConfig(Duration checksumTimeout, Duration readyTimeout, int m
                 pauseAfterReady, resendDelay, deadInterfaceTimeout, clock, clockTime, value);
     }
 
-    /** Short timeouts and no pauses: for simulators in fast timing and tests, never for a real interface. */
+    /**
+     * No pauses, for simulators in fast timing and tests, never for a real interface. The timeouts are generous
+     * (5 s for a checksum, 10 s for the ready byte, dead after 10 s): they only run out when something is wrong,
+     * and short ones would run out on a busy machine where nothing is. Tests of the timeouts themselves set their
+     * own.
+     */
     public CM11aConfig forFastSimulator() {
-        return withChecksumTimeout(Duration.ofMillis(300)).withReadyTimeout(Duration.ofSeconds(1))
-                .withIdlePollInterval(Duration.ofMillis(5)).withPauseAfterReady(Duration.ZERO)
-                .withResendDelay(Duration.ZERO).withDeadInterfaceTimeout(Duration.ofMillis(900));
+        return withChecksumTimeout(Duration.ofSeconds(5)).withReadyTimeout(Duration.ofSeconds(10))
+                .withDeadInterfaceTimeout(Duration.ofSeconds(10)).withIdlePollInterval(Duration.ofMillis(5))
+                .withPauseAfterReady(Duration.ZERO).withResendDelay(Duration.ZERO);
     }
 }

@@ -228,6 +228,36 @@ class RtuMasterTest {
     }
 
     @Test
+    void aWriteConfirmationLaterThanTheWindowNeverConfirmsTheNextWrite() {
+        // the motor's "speed -400" confirmation was not heard in time; it comes only after the late-reply window,
+        // just before the confirmation of "speed 400": the bytes tell them apart, however late the first comes
+        byte[] slower = Pdus.writeSingleRegister(1, 0xFE70);
+        byte[] faster = Pdus.writeSingleRegister(1, 400);
+        AtomicInteger writes = new AtomicInteger();
+        ScriptedBusLink link = new ScriptedBusLink(request -> writes.getAndIncrement() == 0 ? List.of()
+                : List.of(frame(1, slower), frame(1, faster)));
+        RtuMaster master = master(link);
+        assertThrows(BusTimeoutException.class, () -> master.call(1, slower, ONCE));
+        assertArrayEquals(faster, master.call(1, faster, ONCE), "the confirmation of 400, not the late one of -400");
+        assertEquals(1, master.statistics().staleReplies());
+        assertEquals(List.of(1), strays.stream().map(RtuFrame::address).toList(), "the late one was heard");
+        assertEquals(2, link.written().size(), "the stale confirmation did not cost a retry");
+    }
+
+    @Test
+    void aStaleWriteConfirmationAloneIsNoConfirmation() {
+        byte[] first = Pdus.writeSingleRegister(1, 100);
+        byte[] second = Pdus.writeSingleRegister(1, 200);
+        AtomicInteger writes = new AtomicInteger();
+        ScriptedBusLink link = new ScriptedBusLink(request -> writes.getAndIncrement() == 0 ? List.of()
+                : List.of(frame(1, first)));
+        RtuMaster master = master(link);
+        assertThrows(BusTimeoutException.class, () -> master.call(1, first, ONCE));
+        assertThrows(BusTimeoutException.class, () -> master.call(1, second, ONCE));
+        assertEquals(1, master.statistics().staleReplies());
+    }
+
+    @Test
     void anAddressThatDidNotAnswerIsAskedAgainOnlyAfterTheLateReplyWindowOthersAtOnce() {
         List<Long> writtenAt = new ArrayList<>();
         AtomicInteger toSeven = new AtomicInteger();

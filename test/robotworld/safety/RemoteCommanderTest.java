@@ -38,6 +38,12 @@ import robotworld.xvsm.XVSMRuntime;
 class RemoteCommanderTest {
 
     private static final Duration START = Duration.ofSeconds(60);
+    /**
+     * The command timeout of the tests about it. A live commander's heartbeats (every 100 ms) keep its motors
+     * running; with the default 500 ms, a busy machine that holds them back half a second stops a commander that is
+     * alive, so these tests use 3 s: a silent commander is still stopped, only later.
+     */
+    private static final Duration COMMAND_TIMEOUT = Duration.ofSeconds(3);
 
     @TempDir
     Path temp;
@@ -51,9 +57,9 @@ class RemoteCommanderTest {
         rig = SafetyRig.start();
         provider = XVSMRuntime.connect(rig.spaceUrl, "robot-pc");
         // not about the bus watchdog: a long one, so a busy machine does not stop the motors for another reason;
-        // about the command timeout: the default, whatever the test JVM sets for other tests
+        // about the command timeout: one a busy machine does not run out while the commander lives
         provider.safety().describe(SafetyRig.ROBOT, SafetyRig.MOTOR, new ModuleSafety(null, 10_000, null));
-        provider.safety().setDefaultCommandTimeout(SafetySettings.DEFAULT_COMMAND_TIMEOUT);
+        provider.safety().setDefaultCommandTimeout(COMMAND_TIMEOUT);
         RS485Bus bus = provider.own(new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
                 BusTiming.defaults().withFrameGap(Duration.ZERO)));
         motor = provider.own(new XVSMMotorModuleLocal(provider, SafetyRig.ROBOT, SafetyRig.MOTOR,
@@ -107,12 +113,12 @@ class RemoteCommanderTest {
 
     @Test
     void aLiveCommanderThatIsQuietKeepsItsMotorsRunning() throws Exception {
-        provider.safety().guards().get(0).setCommandTimeout(Duration.ofMillis(1500));
         try (XVSMRuntime laptop = XVSMRuntime.connect(rig.spaceUrl, "laptop")) {
             XVSMMotorModuleRemote remote = laptop.own(new XVSMMotorModuleRemote(laptop, SafetyRig.ROBOT,
                     SafetyRig.MOTOR));
             remote.setMotor(1, 0.2);
-            Thread.sleep(4_000); // no calls for more than twice the command timeout: its heartbeats keep it
+            // no calls for more than twice the command timeout: its heartbeats keep it
+            Thread.sleep(2 * COMMAND_TIMEOUT.toMillis() + 500);
             assertEquals(200, rig.motorSpeed(1));
             assertTrue(provider.safety().recentStops().isEmpty(), provider.safety().recentStops().toString());
         }
@@ -158,8 +164,10 @@ class RemoteCommanderTest {
             // a program that commands by hand, without a runtime, and never sends a heartbeat
             ghost.write(ghost.lookupContainer(requests), Timeout.TRY_ONCE,
                     CallTuple.of("ghost#r1.1", "setMotor", 1, 600).toTuple());
-            ghost.take(ghost.lookupContainer(answers), Timeout.ofMillis(30_000), Selector.key("ghost#r1.1"));
-            assertEquals(600, rig.motorSpeed(1));
+            List<Entry> done = ghost.take(ghost.lookupContainer(answers), Timeout.ofMillis(30_000),
+                    Selector.key("ghost#r1.1"));
+            // carried out (the motor's speed itself may already be back at 0: 200 ms pass quickly on a busy machine)
+            assertTrue(!CallTuple.parse(done.get(0)).is("ERROR"), done.toString());
             eventually("stopped after 200 ms without a call", rig::motorsStopped);
             ghost.write(ghost.lookupContainer(requests), Timeout.TRY_ONCE,
                     CallTuple.of("ghost#r1.2", "setMotor", 1, 600).toTuple());

@@ -30,7 +30,9 @@ class X10SafeStateTest {
     void start() throws Exception {
         rig = SafetyRig.start();
         room = XVSMRuntime.connect(rig.spaceUrl, "room-pc");
-        room.safety().setDefaultCommandTimeout(SafetySettings.DEFAULT_COMMAND_TIMEOUT);
+        // a silent commander's lamp is switched off after this; a live one's heartbeats (every 100 ms) are never
+        // that late, even on a busy machine (where the default 500 ms can pass between two)
+        room.safety().setDefaultCommandTimeout(Duration.ofSeconds(3));
     }
 
     @AfterEach

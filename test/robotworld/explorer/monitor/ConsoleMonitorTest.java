@@ -42,10 +42,14 @@ class ConsoleMonitorTest {
                 waitFor(() -> text.toString().lines().count() >= 2);
             }
         }
-        String[] lines = text.toString().split("\n");
-        assertTrue(lines[0].matches("\\d\\d:\\d\\d:\\d\\d\\.\\d{3}  DimRoom +Lamp +on +\\(laptop\\)"), lines[0]);
-        assertTrue(lines[1].matches(".*CaterpillarRobot +Bumper-Sensor +getSingleBumper +<4, 1>  \\(laptop\\)"),
-                lines[1]);
+        // each module's answers come through its own container's notifications: in order per module, but two
+        // modules' lines may come in either order on a busy machine
+        List<String> lines = text.toString().lines().toList();
+        assertEquals(2, lines.size(), text.toString());
+        assertTrue(lines.stream().anyMatch(line -> line.matches(
+                "\\d\\d:\\d\\d:\\d\\d\\.\\d{3}  DimRoom +Lamp +on +\\(laptop\\)")), text.toString());
+        assertTrue(lines.stream().anyMatch(line -> line.matches(
+                ".*CaterpillarRobot +Bumper-Sensor +getSingleBumper +<4, 1>  \\(laptop\\)")), text.toString());
     }
 
     @Test
@@ -125,15 +129,21 @@ class ConsoleMonitorTest {
                     bumper.getSingleBumper(4);
                 }
                 motor.setMotor(1, -0.3);
-                waitFor(() -> text.toString().contains("-0.300"));
+                waitFor(() -> text.toString().contains("-0.300") && text.toString().contains("getSingleBumper"));
             }
         }
+        // in order per module; the bumper's line may come before or after the motor's on a busy machine (each
+        // module's answers come through its own container's notifications)
         List<String> lines = text.toString().lines().toList();
         assertEquals(4, lines.size(), text.toString());
-        assertTrue(lines.get(0).matches(".*Motor-Controller +setMotor +1 \\+0\\.250  \\(laptop\\)"), lines.get(0));
-        assertTrue(lines.get(1).matches(".*setMotor +2 \\+0\\.250 .*"), lines.get(1));
-        assertTrue(lines.get(2).matches(".*getSingleBumper +<4, 1> .*"), lines.get(2));
-        assertTrue(lines.get(3).matches(".*setMotor +1 -0\\.300 .*"), lines.get(3));
+        List<String> motorLines = lines.stream().filter(line -> line.contains("Motor-Controller")).toList();
+        assertEquals(3, motorLines.size(), text.toString());
+        assertTrue(motorLines.get(0).matches(".*Motor-Controller +setMotor +1 \\+0\\.250  \\(laptop\\)"),
+                motorLines.get(0));
+        assertTrue(motorLines.get(1).matches(".*setMotor +2 \\+0\\.250 .*"), motorLines.get(1));
+        assertTrue(motorLines.get(2).matches(".*setMotor +1 -0\\.300 .*"), motorLines.get(2));
+        assertEquals(1, lines.stream().filter(line -> line.matches(".*Bumper-Sensor +getSingleBumper +<4, 1> .*"))
+                .count(), text.toString());
     }
 
     @Test
@@ -146,22 +156,26 @@ class ConsoleMonitorTest {
             MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.chapter5()))
                     .only(List.of("Bumper-Sensor"));
             assertEquals(1, world.moduleCount());
+            int calls = 0;
+            long opened = System.nanoTime();
             try (ConsoleMonitor monitor = new ConsoleMonitor(world, space.connection(), new PrintWriter(text),
                     new ConsoleMonitor.Options(false, true))) {
                 XVSMBumperModuleRemote bumper = new XVSMBumperModuleRemote(laptop, "CaterpillarRobot", "Bumper-Sensor");
                 long until = System.nanoTime() + 2_300_000_000L;
-                int calls = 0;
-                while (System.nanoTime() < until) { // a 20 Hz poll
+                while (System.nanoTime() < until || calls < 20) { // a 20 Hz poll, 20 calls at least
                     bumper.getSingleBumper(6);
                     calls++;
                     Thread.sleep(50);
                 }
-                assertTrue(calls >= 20, "polled " + calls + " times");
                 waitFor(() -> text.toString().contains("calls, last getSingleBumper <6, 1>"));
             }
+            long seconds = (System.nanoTime() - opened) / 1_000_000_000L;
+            List<String> lines = text.toString().lines().toList();
+            // at most one line per second that passed (however long a busy machine made it), fewer than calls
+            assertTrue(lines.size() >= 1 && lines.size() <= seconds + 1 && lines.size() < calls,
+                    "one line per second, not per call: " + calls + " calls in " + seconds + " s:\n" + text);
         }
         List<String> lines = text.toString().lines().toList();
-        assertTrue(lines.size() >= 1 && lines.size() <= 4, "one line per second, not per call:\n" + text);
         assertTrue(lines.stream().anyMatch(line -> line.matches(
                 "\\d\\d:\\d\\d:\\d\\d  Bumper-Sensor \\d+ calls, last getSingleBumper <6, 1>  \\| alive: CaterpillarRobot")),
                 text.toString());
@@ -172,10 +186,11 @@ class ConsoleMonitorTest {
     }
 
     private static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
+        // a bound for a monitor that never prints, not a speed claim: a busy machine may take seconds
+        long deadline = System.nanoTime() + Duration.ofSeconds(60).toNanos();
         while (!condition.getAsBoolean()) {
             if (System.nanoTime() > deadline) {
-                throw new AssertionError("condition not met within 5 s");
+                throw new AssertionError("condition not met within 60 s");
             }
             Thread.sleep(10);
         }
