@@ -39,21 +39,14 @@ class SlowSendersTest {
         List<Socket> slow = new ArrayList<>();
         try (SpaceServer server = SpaceServer.start(options); RemoteSpace client = RemoteSpace.open(server.uri())) {
             ContainerRef queue = client.createContainer(ContainerSpec.of(Order.FIFO).named("queue"));
-            long[] before = timeCalls(client, queue);
+            long[] before = timeCalls(client, queue, CALLS);
 
-            String head = "POST " + server.uri().getPath() + "/write HTTP/1.1\r\nHost: x\r\nContent-Type: "
-                    + "application/json\r\nContent-Length: 1000\r\n\r\n{";
-            for (int i = 0; i < SLOW_CONNECTIONS; i++) {
-                Socket socket = new Socket();
-                socket.connect(new InetSocketAddress(server.uri().getHost(), server.port()), 10_000);
-                socket.getOutputStream().write(head.getBytes(StandardCharsets.US_ASCII));
-                slow.add(socket);
-            }
+            openSlowRequests(server, SLOW_CONNECTIONS, slow);
             Thread trickle = new Thread(() -> trickle(slow), "slow-senders");
             trickle.setDaemon(true);
             trickle.start();
             try {
-                long[] during = timeCalls(client, queue);
+                long[] during = timeCalls(client, queue, CALLS);
                 long medianDelayMillis = TimeUnit.NANOSECONDS.toMillis(during[CALLS / 2] - before[CALLS / 2]);
                 long slowestMillis = TimeUnit.NANOSECONDS.toMillis(during[CALLS - 1]);
                 // a thread held per slow request would stop the server outright: the bound leaves room for a
@@ -73,10 +66,22 @@ class SlowSendersTest {
         }
     }
 
+    /** Opens {@code count} connections, each with the head of a write whose 1000-byte body has not come yet. */
+    static void openSlowRequests(SpaceServer server, int count, List<Socket> into) throws IOException {
+        String head = "POST " + server.uri().getPath() + "/write HTTP/1.1\r\nHost: x\r\nContent-Type: "
+                + "application/json\r\nContent-Length: 1000\r\n\r\n{";
+        for (int i = 0; i < count; i++) {
+            Socket socket = new Socket();
+            socket.connect(new InetSocketAddress(server.uri().getHost(), server.port()), 10_000);
+            socket.getOutputStream().write(head.getBytes(StandardCharsets.US_ASCII));
+            into.add(socket);
+        }
+    }
+
     /** Each call is a write and a take on its own connection's exchange; their durations, sorted. */
-    private static long[] timeCalls(RemoteSpace client, ContainerRef queue) {
-        long[] nanos = new long[CALLS];
-        for (int i = 0; i < CALLS; i++) {
+    static long[] timeCalls(RemoteSpace client, ContainerRef queue, int calls) {
+        long[] nanos = new long[calls];
+        for (int i = 0; i < calls; i++) {
             long started = System.nanoTime();
             client.write(queue, Timeout.TRY_ONCE, Entry.of(i));
             assertEquals(List.of(Entry.of(i)), client.take(queue, Timeout.ofMillis(10_000)));
@@ -87,7 +92,7 @@ class SlowSendersTest {
     }
 
     /** One more byte of every slow body each second, as a slow sender keeps its connection alive. */
-    private static void trickle(List<Socket> sockets) {
+    static void trickle(List<Socket> sockets) {
         byte[] space = {' '};
         while (!Thread.currentThread().isInterrupted()) {
             for (Socket socket : sockets) {
