@@ -68,14 +68,18 @@ class DemoTest {
 
     @Test
     void killingTheControlProgramMidDriveStopsTheRobot() throws Exception {
-        // the demo's programs get the demo's safety settings: here the defaults, which the kill is about
+        // the demo's programs get the demo's safety settings: a command timeout short enough for the stop to come
+        // within the run, long enough that a busy machine does not stop the live control program before the kill
+        // (the 500 ms default can pass between two of its heartbeats there)
         String commandTimeout = System.getProperty("rwe.command.timeout.ms");
-        System.clearProperty("rwe.command.timeout.ms");
+        System.setProperty("rwe.command.timeout.ms", "1500");
         try {
             killAndWatch();
         } finally {
             if (commandTimeout != null) {
                 System.setProperty("rwe.command.timeout.ms", commandTimeout);
+            } else {
+                System.clearProperty("rwe.command.timeout.ms");
             }
         }
     }
