@@ -26,6 +26,11 @@ final class EchoCanceller {
     private byte[] pending;
     /** The echo last dropped, when it could also have been the reply (a write, an echo request). */
     private byte[] ambiguousCopy;
+    /**
+     * A late reply to an earlier send of the same request may still come (a retry, or a reply given up on), so
+     * two copies of a write prove no echo: on a busy machine they are that late reply and this one.
+     */
+    private boolean lateCopyPossible;
 
     EchoCanceller(String portName) {
         this.portName = portName;
@@ -46,6 +51,9 @@ final class EchoCanceller {
 
     /** AUTO: a copy of a write came twice (echo, then reply), or did not (no echo). */
     void settle(boolean secondCopyCame) {
+        if (secondCopyCame && lateCopyPossible) {
+            return; // the second copy may be a late reply to an earlier send: the question stays open
+        }
         if (secondCopyCame) {
             staleFrameEqualsLastRequest();
         } else if (!detected) {
@@ -58,10 +66,16 @@ final class EchoCanceller {
         return detected;
     }
 
-    /** A request went out: its echo may come next. */
-    void sent(byte[] frame) {
+    /**
+     * A request went out: its echo may come next.
+     *
+     * @param mayBeAnsweredLate whether a reply to an earlier send of the same request may still come (this is a
+     *        retry, or replies owed by its address were given up on): copies of it then prove no echo
+     */
+    void sent(byte[] frame, boolean mayBeAnsweredLate) {
         pending = frame;
         ambiguousCopy = null;
+        lateCopyPossible = mayBeAnsweredLate;
     }
 
     /**
@@ -101,7 +115,7 @@ final class EchoCanceller {
             return NEED_MORE;
         }
         pending = null;
-        boolean twoCopies = have >= 2 * echo.length
+        boolean twoCopies = !lateCopyPossible && have >= 2 * echo.length
                 && Arrays.equals(buffer, echo.length, 2 * echo.length, echo, 0, echo.length);
         boolean proof = !replyMayEqualRequest(echo[1] & 0xFF) || twoCopies; // two copies: echo, then reply
         switch (mode) {
@@ -135,7 +149,7 @@ final class EchoCanceller {
      * write or echo came after the request's own echo had been taken for it. Proof of an echoing adapter.
      */
     void staleFrameEqualsLastRequest() {
-        if (mode == EchoCancellation.AUTO && !detected) {
+        if (mode == EchoCancellation.AUTO && !detected && !lateCopyPossible) {
             detected = true;
             LOG.warn("{}: the adapter echoes every request (a write's reply came after its echo): echo "
                     + "cancellation is on from now", portName);

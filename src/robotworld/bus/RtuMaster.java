@@ -191,7 +191,7 @@ final class RtuMaster {
                 if (attempt > 1) {
                     retries.incrementAndGet();
                 }
-                long sent = send(address, frame);
+                long sent = send(address, frame, attempt > 1);
                 // a late reply to an earlier attempt of this call answers the same request: it is accepted
                 Reply reply = readReply(address, pdu, length, sent + policy.replyTimeout().toNanos(), true);
                 if (reply.kind() == Kind.OK) {
@@ -230,7 +230,7 @@ final class RtuMaster {
      */
     synchronized void callQuietly(int address, byte[] pdu, Duration replyTimeout) {
         settlePending();
-        long sent = send(address, new RtuFrame(address, pdu).encode());
+        long sent = send(address, new RtuFrame(address, pdu).encode(), false);
         pending = new Pending(address, pdu, sent, sent + replyTimeout.toNanos());
     }
 
@@ -270,14 +270,14 @@ final class RtuMaster {
     }
 
     /** Writes a frame after the line has been quiet for the frame gap; returns when it has left the wire. */
-    private long send(int address, byte[] frame) {
+    private long send(int address, byte[] frame, boolean retry) {
         try {
             reopenIfBroken();
-            awaitOwedReplies(address);
+            boolean repliesGivenUp = awaitOwedReplies(address);
             drainStale();
             sleepUntil(lineQuietSince + frameGapNanos);
             link.write(frame);
-            echo.sent(frame);
+            echo.sent(frame, retry || repliesGivenUp);
             lastSent = frame;
             answeredByCopy = false;
             transactions.incrementAndGet();
@@ -587,11 +587,14 @@ final class RtuMaster {
      * Before {@code address} is asked anything new, its owed late replies are waited for and discarded, so none of
      * them can pass for the answer to the new request; the wait ends as soon as all have come, at the latest when
      * the late-reply window closes. Frames from other addresses meanwhile are stray frames as usual.
+     *
+     * @return whether some owed replies did not come (they may still come, later than the window)
      */
-    private void awaitOwedReplies(int address) throws IOException {
+    private boolean awaitOwedReplies(int address) throws IOException {
         if (owed[address] == 0) {
-            return; // the normal path: nothing to wait for
+            return false; // the normal path: nothing to wait for
         }
+        boolean givenUp = false;
         byte[] request = owedRequest[address];
         FrameLength length = FrameLengths.responseTo(request);
         while (owed[address] > 0) {
@@ -599,6 +602,7 @@ final class RtuMaster {
             if (reply.kind() == Kind.TIMEOUT) {
                 LOG.debug("{} on {}: {} owed replies did not come within the late-reply window",
                         describe.apply(address), link.portName(), owed[address]);
+                givenUp = true;
                 break;
             }
             if (reply.kind() != Kind.CORRUPT) { // a corrupted frame may be noise: the reply may still come
@@ -613,6 +617,7 @@ final class RtuMaster {
         }
         owed[address] = 0;
         owedRequest[address] = null;
+        return givenUp;
     }
 
     /**

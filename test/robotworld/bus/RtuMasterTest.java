@@ -2,6 +2,7 @@ package robotworld.bus;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -242,6 +243,27 @@ class RtuMasterTest {
         assertEquals(1, master.statistics().staleReplies());
         assertEquals(List.of(1), strays.stream().map(RtuFrame::address).toList(), "the late one was heard");
         assertEquals(2, link.written().size(), "the stale confirmation did not cost a retry");
+    }
+
+    @Test
+    void aLateConfirmationOfAnEarlierAttemptIsNoProofOfAnEchoingAdapter() {
+        // a busy machine: the first write's confirmation comes only as its retry is answered, so two copies of the
+        // request arrive together, as from an adapter that echoes; taken as one, every later write would lose its
+        // confirmation as "the echo" and time out
+        byte[] write = Pdus.writeSingleRegister(1, 400);
+        AtomicInteger writes = new AtomicInteger();
+        ScriptedBusLink link = new ScriptedBusLink(request -> switch (writes.getAndIncrement()) {
+            case 0 -> List.of();
+            case 1 -> List.of(frame(1, write), frame(1, write));
+            default -> List.of(frame(1, request.length == 8 ? java.util.Arrays.copyOfRange(request, 1, 6)
+                    : BUMPERS_REPLY));
+        });
+        RtuMaster master = master(link);
+        assertArrayEquals(write, master.call(1, write, POLICY));
+        assertFalse(master.echoDetected(), "no echo: the second copy was the first attempt's late reply");
+        byte[] next = Pdus.writeSingleRegister(2, 0);
+        assertArrayEquals(next, master.call(1, next, POLICY), "the next write is confirmed by its one reply");
+        assertEquals(3, link.written().size(), "without a retry");
     }
 
     @Test
