@@ -280,7 +280,7 @@ final class AsyncCalls implements Runnable {
         /** A new call id and request; the fields every send starts from. */
         private void prepare(long now) {
             Timeout wait = timeout.isInfinite() ? Timeout.INFINITE
-                    : Timeout.ofMillis(Math.max(0, TimeUnit.NANOSECONDS.toMillis(operationDeadline - now)));
+                    : RemoteSpace.waitLeft(operationDeadline - now);
             forgetCallIds();
             callId = owner.newCallId();
             owner.waiting(callId, true);

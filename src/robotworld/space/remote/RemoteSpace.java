@@ -541,7 +541,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             ensureOpen();
             long now = System.nanoTime();
             Timeout wait = timeout == null ? Timeout.TRY_ONCE : infinite ? Timeout.INFINITE
-                    : Timeout.ofMillis(Math.max(0, TimeUnit.NANOSECONDS.toMillis(operationDeadline - now)));
+                    : waitLeft(operationDeadline - now);
             String callId = needsId ? clientId + ":" + lastCall.incrementAndGet() : null;
             byte[] request = encode(body, callId, wait);
             long serverWait = wait.isInfinite() ? serverMaxWaitMillis : Math.min(wait.millis(), serverMaxWaitMillis);
@@ -785,6 +785,14 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     }
 
     // ---- helpers ----
+
+    /**
+     * The wait the server is given for what is left of a call's timeout, rounded up to whole milliseconds: rounded
+     * down, a take could time out up to a millisecond before the timeout its caller gave.
+     */
+    static Timeout waitLeft(long nanosLeft) {
+        return Timeout.ofMillis(nanosLeft <= 0 ? 0 : (nanosLeft + 999_999) / 1_000_000);
+    }
 
     private String headers(String ackHeader) {
         return ackHeader == null ? endpoint.authorization()
