@@ -173,11 +173,14 @@ public abstract class NotificationContract extends SpaceContract {
         ContainerRef ref = container(Order.FIFO);
         RecordingListener listener = RecordingListener.recording();
         long start = System.nanoTime();
-        space.subscribe(ref, EnumSet.of(Operation.WRITE), NotificationMode.RESTRICTED, Timeout.ofMillis(300), listener);
+        // a timeout of 100 writing periods: a busy machine that holds the writer or the delivery up for a while
+        // still lets several writes fire before it
+        space.subscribe(ref, EnumSet.of(Operation.WRITE), NotificationMode.RESTRICTED, Timeout.ofMillis(2_000),
+                listener);
         long written = writeEvery(ref, 20, () -> listener.endReason() != null);
         long lasted = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
         assertEquals(SubscriptionEnd.EXPIRED, listener.awaitEnd(SOON));
-        assertTrue(lasted >= 290, "ended after " + lasted + " ms");
+        assertTrue(lasted >= 1_990, "ended after " + lasted + " ms");
         assertTrue(listener.received().size() >= 2, "fired repeatedly");
         assertTrue(listener.received().size() <= written);
     }
