@@ -50,8 +50,11 @@ class PutThenTakeTest {
         space = EmbeddedSpace.open();
         // a short server wait, so the take's part of it runs out and the client asks again
         server = SpaceServer.start(space, SpaceServer.Options.defaults().port(0).maxWaitMillis(100));
-        a = RemoteSpace.open(server.uri());
-        b = RemoteSpace.open(server.uri());
+        // a network allowance a busy machine does not use up: these tests are about the exchange, not the network
+        // (a freshly started server on a loaded machine took longer than the default 3 s to answer the first call)
+        RemoteSpace.Options patient = RemoteSpace.Options.defaults().networkAllowanceMillis(30_000);
+        a = RemoteSpace.open(server.uri(), patient);
+        b = RemoteSpace.open(server.uri(), patient);
         threads = Executors.newCachedThreadPool();
         requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQUEST"));
         answers = a.createContainer(ContainerSpec.of(Order.LIFO).withKeyView().named("ANSWER"));
