@@ -39,7 +39,7 @@ public abstract class SpaceContract {
      * guard, not a speed check (speed lives in the benchmarks): sized so that the stress tests' thousands of
      * remote calls finish even on a 2-core machine that is busy with other work.
      */
-    protected static final Duration SOON = Duration.ofSeconds(20);
+    protected static final Duration SOON = Duration.ofSeconds(60);
     /** Queue size for ordinary tests: far more than any of them produces. */
     protected static final int LARGE_QUEUE = 100_000;
 
