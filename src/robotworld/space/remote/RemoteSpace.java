@@ -463,10 +463,17 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         return message;
     }
 
-    /** Asks the server to cancel a call (a lost take's entries go back); one try within the network allowance. */
+    /**
+     * Asks the server to cancel a call (a lost take's entries go back at once, not when their hold runs out); one try
+     * per server within the network allowance: a server that does not answer moves the client on to the next one.
+     */
     void cancelQuietly(String callId) {
-        exchangeQuietly("cancel", null, callId, System.nanoTime()
-                + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
+        for (int i = 0; i < endpoints.size() && !closed && System.nanoTime() - deadline < 0; i++) {
+            if (exchangeQuietly("cancel", null, callId, deadline) != null) {
+                return;
+            }
+        }
     }
 
     /** The call id of the take of a writeThenTake whose write has id {@code callId}. */
