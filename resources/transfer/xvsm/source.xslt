@@ -171,7 +171,7 @@
 
   <xsl:template name="space-constants">
     <xsl:param name="host" as="xs:string?" select="if ($self/rw:Host) then gen:host($self/rw:Host) else ()"/>
-    <xsl:text>    /** The space from the description; override with -Drwe.space.url=... or RWE_SPACE_URL. */&#10;</xsl:text>
+    <xsl:text>    /** The space from the description (its servers' URLs, separated by commas); override with -Drwe.space.url=... or RWE_SPACE_URL. */&#10;</xsl:text>
     <xsl:text>    public static final String SPACE_URL = </xsl:text>
     <xsl:value-of select="if ($world/rw:SpaceURL) then gen:java-string($world/rw:SpaceURL) else 'null'"/>
     <xsl:text>;&#10;    /** This computer's host name from the description; override with -Drwe.host=... or RWE_HOST. */&#10;</xsl:text>

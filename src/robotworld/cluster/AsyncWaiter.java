@@ -152,7 +152,8 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
                 return;
             }
             if (waiter.isClosed() && giveUp == null) {
-                giveUp = new SpaceClosedException("the space handle was closed while waiting on " + ref);
+                giveUp = space.node().isClosed() ? ClusterNode.memberGone(ref.space())
+                        : new SpaceClosedException("the space handle was closed while waiting on " + ref);
             }
             state = State.BUSY;
         }

@@ -34,7 +34,6 @@ import com.hazelcast.spi.exception.TargetDisconnectedException;
 import com.hazelcast.topic.ITopic;
 import com.hazelcast.splitbrainprotection.SplitBrainProtectionException;
 
-import robotworld.space.SpaceClosedException;
 import robotworld.space.SpaceException;
 import robotworld.space.SpaceUnavailableException;
 import robotworld.space.internal.Delivery;
@@ -255,7 +254,7 @@ final class ClusterNode {
         try {
             while (true) {
                 if (closed) {
-                    throw new SpaceClosedException("this cluster member has shut down");
+                    throw memberGone(uri);
                 }
                 Throwable failure;
                 try {
@@ -265,7 +264,7 @@ final class ClusterNode {
                             ? e.getCause().getCause() : e;
                 }
                 if (failure instanceof HazelcastInstanceNotActiveException) {
-                    throw new SpaceClosedException("this cluster member has shut down");
+                    throw memberGone(uri);
                 }
                 if (!isWorthRepeating(failure)) {
                     throw failure instanceof SpaceException space ? space
@@ -286,6 +285,11 @@ final class ClusterNode {
                 Thread.currentThread().interrupt();
             }
         }
+    }
+
+    /** This member has shut down: for the space, unreachable through it (another member may serve). */
+    static SpaceUnavailableException memberGone(URI uri) {
+        return new SpaceUnavailableException(uri, "this cluster member has shut down", null);
     }
 
     private SpaceUnavailableException unavailable(URI uri, String what, Throwable failure) {

@@ -32,9 +32,6 @@ final class ClusterReceipts implements CallReceipts {
     private final Map<String, String> containerOf = new ConcurrentHashMap<>();
     /** Takes and destroys held for their client's confirmation, made through this member. */
     private final Set<String> held = ConcurrentHashMap.newKeySet();
-    /** Confirmations to pass on, by container, sent in batches. */
-    private final Map<String, List<String>> acks = new LinkedHashMap<>();
-    private final Set<String> flushing = ConcurrentHashMap.newKeySet();
     /** Calls no container knew when they were cancelled: refused here if they still come. */
     private final Map<String, Long> tombstones = new LinkedHashMap<>();
 
@@ -60,55 +57,29 @@ final class ClusterReceipts implements CallReceipts {
 
     @Override
     public void acknowledge(String callId) {
-        held.remove(callId);
-        String container = containerOf.remove(callId);
-        if (container != null) {
-            queueAck(container, callId);
-        } else {
-            space.node().runInBackground(() -> {
-                String found = locate(callId);
-                if (found != null) {
-                    queueAck(found, callId);
-                }
-            });
-        }
+        acknowledge(List.of(callId));
     }
 
-    private void queueAck(String container, String callId) {
-        synchronized (acks) {
-            acks.computeIfAbsent(container, key -> new ArrayList<>()).add(callId);
-        }
-        if (flushing.add(container)) {
-            space.node().runInBackground(() -> flush(container));
-        }
-    }
-
-    /** Sends the confirmations queued for {@code container} in one call; again later if the cluster is busy. */
-    private void flush(String container) {
-        while (true) {
-            List<String> batch;
-            synchronized (acks) {
-                batch = acks.remove(container);
-                if (batch == null) {
-                    flushing.remove(container);
-                    return;
-                }
+    /**
+     * Drops the held removals of these calls in their containers, one call per container, before returning: the
+     * server answers the request that carried the confirmations only after that, so a member failing right after
+     * cannot lose a confirmation (which would bring the entries back to be taken again).
+     */
+    @Override
+    public void acknowledge(List<String> callIds) {
+        Map<String, List<String>> byContainer = new LinkedHashMap<>();
+        for (String callId : callIds) {
+            held.remove(callId);
+            String container = containerOf.remove(callId);
+            if (container == null) {
+                container = locate(callId);
             }
-            try {
-                space.receiptsCall(container, ContainerCall.Kind.ACK_RECEIPTS, batch);
-            } catch (SpaceException e) {
-                LOG.log(Level.DEBUG, "confirmations for " + container + " wait: " + e.getMessage());
-                synchronized (acks) {
-                    acks.computeIfAbsent(container, key -> new ArrayList<>()).addAll(batch);
-                }
-                flushing.remove(container);
-                space.node().schedule(() -> {
-                    if (flushing.add(container)) {
-                        flush(container);
-                    }
-                }, 250);
-                return;
+            if (container != null) {
+                byContainer.computeIfAbsent(container, key -> new ArrayList<>()).add(callId);
             }
+        }
+        for (Map.Entry<String, List<String>> batch : byContainer.entrySet()) {
+            space.receiptsCall(batch.getKey(), ContainerCall.Kind.ACK_RECEIPTS, batch.getValue());
         }
     }
 

@@ -671,9 +671,11 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
     }
 
     private void checkOpen() {
-        if (closed || node.isClosed()) {
-            throw new SpaceClosedException(node.isClosed() ? "this cluster member has shut down"
-                    : "the space handle is closed");
+        if (closed) {
+            throw new SpaceClosedException("the space handle is closed");
+        }
+        if (node.isClosed()) {
+            throw ClusterNode.memberGone(uri);
         }
     }
 

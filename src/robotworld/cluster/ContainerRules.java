@@ -64,7 +64,7 @@ final class ContainerRules {
             ContainerContents.checkSelectors(record.spec(), selectors);
             Completion completion = attempt(kind, selectors, List.of(), List.of());
             if (completion != null) {
-                receipt(client, kind, completion);
+                receipt(client, kind, completion, leaseMillis);
                 if (kind.mutates()) {
                     serve();
                 }
@@ -74,7 +74,7 @@ final class ContainerRules {
             return invalid(e);
         }
         return queueOrRefuse(new WaiterRecord(call, kind, selectors, List.of(), List.of(), expiry(waitMillis),
-                client), waitMillis);
+                client, leaseMillis), waitMillis);
     }
 
     Outcome write(OpId call, List<Item> items, long waitMillis, String client) {
@@ -89,7 +89,7 @@ final class ContainerRules {
             }
             Completion completion = attempt(WaiterRecord.Kind.WRITE, new Selector[0], items, List.of());
             if (completion != null) {
-                receipt(client, WaiterRecord.Kind.WRITE, completion);
+                receipt(client, WaiterRecord.Kind.WRITE, completion, 0);
                 serve();
                 return done(List.of());
             }
@@ -97,7 +97,7 @@ final class ContainerRules {
             return invalid(e);
         }
         return queueOrRefuse(new WaiterRecord(call, WaiterRecord.Kind.WRITE, new Selector[0], items, List.of(),
-                expiry(waitMillis), client), waitMillis);
+                expiry(waitMillis), client, 0), waitMillis);
     }
 
     Outcome shift(List<Item> items, String client) {
@@ -153,14 +153,17 @@ final class ContainerRules {
         };
     }
 
-    /** Keeps what a client's call did under its id: a held removal, or a write that happened. */
-    private void receipt(String client, WaiterRecord.Kind kind, Completion completion) {
+    /**
+     * Keeps what a client's call did under its id: a held removal (for {@code lease} ms, the lease of the call that
+     * asked for it), or a write that happened.
+     */
+    private void receipt(String client, WaiterRecord.Kind kind, Completion completion, long lease) {
         if (client == null || !completion.succeeded()) {
             return;
         }
         if (kind == WaiterRecord.Kind.TAKE || kind == WaiterRecord.Kind.DESTROY) {
             if (!completion.removed().isEmpty()) {
-                record.putReceipt(client, Receipt.held(completion.removed(), now, leaseMillis));
+                record.putReceipt(client, Receipt.held(completion.removed(), now, lease));
             }
         } else if (kind == WaiterRecord.Kind.WRITE) {
             record.putReceipt(client, Receipt.done(List.of(), now));
@@ -577,7 +580,7 @@ final class ContainerRules {
                 i--;
                 if (waiter.kind() != WaiterRecord.Kind.RESTORE) {
                     if (waiter.client() != null) {
-                        receipt(waiter.client(), waiter.kind(), completion);
+                        receipt(waiter.client(), waiter.kind(), completion, waiter.lease());
                         // the receipt holds the entries now: undoing the completion must not put them back twice
                         completion = new Completion(completion.entries(), List.of(), completion.failure(),
                                 completion.at());
@@ -611,7 +614,7 @@ final class ContainerRules {
             publish(Operation.WRITE, entriesOfPlaced(completion.removed()), List.of());
         } else {
             record.addWaiter(new WaiterRecord(waiter, WaiterRecord.Kind.RESTORE, new Selector[0], List.of(),
-                    completion.removed(), Long.MAX_VALUE, null), true);
+                    completion.removed(), Long.MAX_VALUE, null, 0), true);
         }
     }
 

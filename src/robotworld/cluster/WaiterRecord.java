@@ -21,9 +21,10 @@ import robotworld.space.internal.PlacedEntry;
  * @param restoring for a restoration, the entries to put back
  * @param expiresAt when the owner may drop it as abandoned (owner's clock; its member gives up well before)
  * @param client    the call id of the server's client it runs for, or null: its receipt is kept under it
+ * @param lease     for a client's take or destroy: how long its removal is held for confirmation, in ms
  */
 record WaiterRecord(OpId id, Kind kind, Selector[] selectors, List<Item> items, List<PlacedEntry> restoring,
-                    long expiresAt, String client) {
+                    long expiresAt, String client, long lease) {
 
     /** What a waiter does when it is served. */
     enum Kind {
@@ -44,6 +45,7 @@ record WaiterRecord(OpId id, Kind kind, Selector[] selectors, List<Item> items, 
         Codec.writePlacedList(out, restoring);
         out.writeLong(expiresAt);
         out.writeString(client);
+        out.writeLong(lease);
     }
 
     static WaiterRecord read(ObjectDataInput in) throws IOException {
@@ -53,6 +55,7 @@ record WaiterRecord(OpId id, Kind kind, Selector[] selectors, List<Item> items, 
         List<Item> items = Codec.readItems(in);
         List<PlacedEntry> restoring = Codec.readPlacedList(in);
         long expiresAt = in.readLong();
-        return new WaiterRecord(id, kind, selectors, items, restoring, expiresAt, in.readString());
+        String client = in.readString();
+        return new WaiterRecord(id, kind, selectors, items, restoring, expiresAt, client, in.readLong());
     }
 }

@@ -32,7 +32,8 @@ final class ErrorMessages {
             Map.entry("HostType", "a host is a computer's name or IP address (robot-laptop, 192.168.1.20) or a URL"
                     + " (http://robot-laptop:8080/)"),
             Map.entry("PortType", "a port is a serial device (/dev/ttyUSB0, COM4) or tcp://host:port"),
-            Map.entry("SpaceUrlType", "the space URL is http://host:port/path (like http://localhost:9876/space)"),
+            Map.entry("SpaceUrlType", "the space URL is http://host:port/path (like http://localhost:9876/space),"
+                    + " or several servers' URLs separated by commas"),
             Map.entry("HouseCodeType", "an X10 house code is one capital letter from A to P"),
             Map.entry("UnitCodeType", "an X10 unit code is a number word from ONE to SIXTEEN"),
             Map.entry("CommunicationTypeType", "the communication type is xvsm or none"),

@@ -16,6 +16,14 @@ public interface CallReceipts {
     /** The client received the answer of {@code callId}: its removal stands. */
     void acknowledge(String callId);
 
+    /**
+     * The client received the answers of {@code callIds}; done (for good) when this returns, since the client is
+     * then told so and will not send them again.
+     */
+    default void acknowledge(List<String> callIds) {
+        callIds.forEach(this::acknowledge);
+    }
+
     /** Undoes the held removal of {@code callId}; whether there was one. */
     boolean restore(String callId);
 

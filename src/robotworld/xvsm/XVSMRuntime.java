@@ -1,12 +1,10 @@
 package robotworld.xvsm;
 
-import java.net.URI;
 import java.time.Duration;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
-import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ScheduledExecutorService;
@@ -22,6 +20,7 @@ import robotworld.safety.SafetySupervisor;
 import robotworld.safety.StopCause;
 import robotworld.space.Capi;
 import robotworld.space.remote.RemoteSpace;
+import robotworld.space.remote.SpaceUrls;
 
 /**
  * One participant program's connection to the space and everything it runs on it: its host name, the resources
@@ -105,8 +104,9 @@ public final class XVSMRuntime implements AutoCloseable {
     /**
      * Connects to the space: the URL and host name from the run-time overrides ({@link RuntimeSettings#fromSystem()}),
      * else the given defaults from the description. A {@code null} host means this computer's host name; a
-     * {@code null} URL is only allowed when it is overridden. {@code http://} and {@code https://} URLs are
-     * opened with {@link RemoteSpace} (with the token of {@code rwe.space.token}, if any).
+     * {@code null} URL is only allowed when it is overridden. The URL may list the servers of a clustered space,
+     * separated by commas ({@link SpaceUrls}); they are opened with {@link RemoteSpace}, which fails over from one
+     * to the next (with the token of {@code rwe.space.token}, if any).
      *
      * @throws IllegalStateException    when no space URL is set anywhere
      * @throws IllegalArgumentException for a URL that is not http(s), or a host name with a '#'
@@ -351,18 +351,8 @@ public final class XVSMRuntime implements AutoCloseable {
     // ----- helpers -----
 
     private static Capi openSpace(String url, String token) {
-        URI uri;
-        try {
-            uri = URI.create(url);
-        } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException("the space URL '" + url + "' is not a URL: " + e.getMessage(), e);
-        }
-        String scheme = uri.getScheme() == null ? "" : uri.getScheme().toLowerCase(Locale.ROOT);
-        if (!scheme.equals("http") && !scheme.equals("https")) {
-            throw new IllegalArgumentException("the space URL must be http:// or https:// (e.g. "
-                    + "http://127.0.0.1:9876/space), was '" + url + "'");
-        }
-        return RemoteSpace.open(uri, RemoteSpace.Options.defaults().token(token));
+        // one server's URL, or the servers of a cluster separated by commas: calls fail over between them
+        return RemoteSpace.open(SpaceUrls.parse(url), RemoteSpace.Options.defaults().token(token));
     }
 
     private static String checkHostName(String hostName) {

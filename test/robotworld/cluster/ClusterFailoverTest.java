@@ -183,8 +183,9 @@ class ClusterFailoverTest {
         eventually("some writes were notified", () -> listener.received().size() >= 100);
         callerMember.crash();
         cluster.members.remove(callerMember);
+        stop.set(true); // the writers' member is gone: their calls fail as unavailable from now on
         for (Future<List<Long>> writer : writers) {
-            writer.get(SOON.toMillis(), TimeUnit.MILLISECONDS); // ends with the crash (its handle is gone)
+            writer.get(SOON.toMillis(), TimeUnit.MILLISECONDS);
         }
         List<Long> stored = values(roles.first().read(log, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL)));
         List<Notification> received = listener.awaitCount(stored.size(), SOON);

@@ -220,6 +220,21 @@ class ReplicaTest {
     }
 
     @Test
+    void aServedClientTakeIsHeldForItsOwnLeaseWhoeverServedIt() throws Exception {
+        Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO), 8));
+        OpId waiter = next(MEMBER_B);
+        pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, waiter, new Selector[0], -1).forClient("k:9", 60_000));
+        pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(1))), 0)); // a call with no lease serves it
+        Thread.sleep(5);
+        pair.run(ContainerCall.sweep());
+        assertEquals(0, pair.owner.contents().size(), "still held: the lease is the take's, not the write's");
+        assertEquals(Receipt.Kind.HELD, pair.owner.receipts().get("k:9").kind());
+        pair.run(ContainerCall.receipts(ContainerCall.Kind.ACK_RECEIPTS, next(MEMBER_B), List.of("k:9")));
+        assertTrue(pair.owner.receipts().isEmpty(), "confirmed: the removal stands");
+        assertEquals(state(pair.owner), state(pair.backup));
+    }
+
+    @Test
     void aClientsWriteIsReportedOnceToACancel() {
         Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO).bounded(1), 8));
         pair.run(ContainerCall.shift(next(MEMBER_A), List.of(Item.of(Entry.of(1)))).forClient("k:2", 60_000));

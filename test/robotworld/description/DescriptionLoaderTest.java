@@ -110,4 +110,12 @@ class DescriptionLoaderTest {
         Path file = Files.writeString(temp.resolve("hall.xml"), xml);
         assertEquals(1, DescriptionLoader.loadEnvironment(file).getEnvironment().sizeOfModuleArray());
     }
+
+    @Test
+    void aWorldMayNameSeveralServersOfItsSpace() throws Exception {
+        String xml = Files.readString(CHAPTER5).replace("<SpaceURL>http://localhost:9876/space</SpaceURL>",
+                "<SpaceURL>http://pc-a:9876/space,http://pc-b:9876/space, http://192.168.1.3:9876/space</SpaceURL>");
+        assertEquals("http://pc-a:9876/space,http://pc-b:9876/space, http://192.168.1.3:9876/space",
+                DescriptionLoader.loadWorldFromString(xml, "cluster.xml").getRobotWorld().getSpaceURL());
+    }
 }

@@ -173,15 +173,15 @@ public final class CallerSoak {
         return sorted[Math.min(sorted.length - 1, (int) ((long) sorted.length * percent / 100))] / 1_000;
     }
 
-    /** IR distances that name their module and sensor: module * 100 + sensor. */
-    private static final class NamedDistances implements IRDistanceModule {
+    /** IR distances that name their module and sensor: module * 100 + sensor (also for the cluster's kill soak). */
+    public static final class NamedDistances implements IRDistanceModule {
         private final int module;
 
-        NamedDistances(int module) {
+        public NamedDistances(int module) {
             this.module = module;
         }
 
-        static int distance(int module, int sensor) {
+        public static int distance(int module, int sensor) {
             return module * 100 + sensor;
         }
 

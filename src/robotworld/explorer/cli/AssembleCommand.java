@@ -61,8 +61,9 @@ final class AssembleCommand implements Callable<Integer> {
             + " world's name in lower case)")
     private String packageName;
 
-    @Option(names = "--space", paramLabel = "URL", defaultValue = WorldAssembly.DEFAULT_SPACE_URL,
-            description = "where the space server runs (default: ${DEFAULT-VALUE}, what rwe space serves)")
+    @Option(names = "--space", paramLabel = "URL[,URL...]", defaultValue = WorldAssembly.DEFAULT_SPACE_URL,
+            description = "where the space server runs, or the servers of a clustered space separated by commas "
+                    + "(default: ${DEFAULT-VALUE}, what rwe space serves)")
     private String spaceUrl;
 
     @Option(names = "--communication", paramLabel = "xvsm|none", defaultValue = "xvsm",

@@ -40,8 +40,9 @@ final class BridgeCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "WORLD", description = "the RobotWorld description")
     private Path world;
 
-    @Option(names = "--space", paramLabel = "URL",
-            description = "the space server (default: rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
+    @Option(names = "--space", paramLabel = "URL[,URL...]",
+            description = "the space server, or the servers of a clustered space separated by commas (default: "
+                    + "rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
     private String space;
 
     @Option(names = "--port", paramLabel = "P", defaultValue = "" + FoxgloveBridge.Options.DEFAULT_PORT,

@@ -49,6 +49,11 @@ final class DemoCommand implements Callable<Integer> {
             description = "record the world's traffic into FILE.mcap (see docs/recording.md)")
     private Path record;
 
+    @Option(names = "--cluster", paramLabel = "N", defaultValue = "0",
+            description = "run the space as a cluster of N server processes (3 to 5, see docs/cluster.md) and kill one"
+                    + " (SIGKILL) while the robot drives: the demo goes on with the others")
+    private int cluster;
+
     @Spec
     private CommandSpec spec;
 
@@ -58,7 +63,7 @@ final class DemoCommand implements Callable<Integer> {
         DemoOptions options;
         try {
             options = new DemoOptions(Duration.ofMillis(Math.round(seconds * 1000)), Viewpoint.parse(viewpoint),
-                    out, console, DemoOptions.defaultHome(), killControl).recording(record);
+                    out, console, DemoOptions.defaultHome(), killControl).recording(record).clustered(cluster);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

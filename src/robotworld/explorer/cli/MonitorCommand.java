@@ -44,8 +44,9 @@ final class MonitorCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "WORLD", description = "the RobotWorld description")
     private Path world;
 
-    @Option(names = "--space", paramLabel = "URL",
-            description = "the space server (default: rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
+    @Option(names = "--space", paramLabel = "URL[,URL...]",
+            description = "the space server, or the servers of a clustered space separated by commas (default: "
+                    + "rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
     private String space;
 
     @Option(names = "--console", description = "print a live text view instead of opening a window (headless)")

@@ -50,8 +50,9 @@ final class RecordCommand implements Callable<Integer> {
     @Option(names = "--duration", paramLabel = "S", description = "stop after this many seconds (default: Ctrl-C)")
     private Double duration;
 
-    @Option(names = "--space", paramLabel = "URL",
-            description = "the space server (default: rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
+    @Option(names = "--space", paramLabel = "URL[,URL...]",
+            description = "the space server, or the servers of a clustered space separated by commas (default: "
+                    + "rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
     private String space;
 
     @Option(names = "--info", paramLabel = "FILE.mcap", description = "print what a recording holds, record nothing")

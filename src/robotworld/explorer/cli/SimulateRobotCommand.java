@@ -53,9 +53,9 @@ final class SimulateRobotCommand implements Callable<Integer> {
     @Option(names = "--for", paramLabel = "SECONDS", description = "stop after this long (default: run until Ctrl-C)")
     private Double seconds;
 
-    @Option(names = "--space", paramLabel = "URL",
-            description = "publish the robot's ground truth (pose, rays, contacts, speeds) to this space server for "
-                    + "the monitor's world view (default: rwe.space.url or RWE_SPACE_URL if set, else none)")
+    @Option(names = "--space", paramLabel = "URL[,URL...]",
+            description = "publish the robot's ground truth (pose, rays, contacts, speeds) to this space server (or "
+                    + "a clustered space's servers, separated by commas) for the monitor's world view (default: rwe.space.url or RWE_SPACE_URL if set, else none)")
     private String spaceUrl;
 
     @Option(names = "--participant", paramLabel = "NAME",

@@ -36,8 +36,9 @@ final class StopCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "WORLD", description = "the RobotWorld description")
     private Path world;
 
-    @Option(names = "--space", paramLabel = "URL",
-            description = "the space server (default: rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
+    @Option(names = "--space", paramLabel = "URL[,URL...]",
+            description = "the space server, or the servers of a clustered space separated by commas (default: "
+                    + "rwe.space.url, RWE_SPACE_URL or the world's SpaceURL)")
     private String space;
 
     @Option(names = "--wait", paramLabel = "SECONDS", defaultValue = "2",

@@ -74,6 +74,11 @@ public final class Demo {
     private static final Duration KILL_AFTER = Duration.ofSeconds(4);
 
     private final DemoOptions options;
+    /** The safety command timeout of a clustered demo's programs: longer than a failover's pause. */
+    static final int CLUSTER_COMMAND_TIMEOUT_MS = 3_000;
+    /** The clustered space's members while a clustered demo runs, else null. */
+    private DemoCluster cluster;
+    private boolean memberKilled;
     private final PrintWriter out;
     private final DemoSummary summary = new DemoSummary();
     private int stepNumber;
@@ -160,6 +165,10 @@ public final class Demo {
     }
 
     private void runSteps(Path out, List<ProgramProcess> programs) throws Exception {
+        if (options.clusterMembers() > 0) {
+            runStepsOnCluster(out, programs);
+            return;
+        }
         Path home = options.home();
         try (SpaceServer space = step("starting a space server on a free loopback port", () -> {
             SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200));
@@ -176,6 +185,43 @@ public final class Demo {
                         + "view");
                 runWithSimulators(out, programs, spaceUrl, simulators);
             }
+        }
+    }
+
+    /** The same steps with the space on a cluster of member processes, one of which is killed mid-run. */
+    private void runStepsOnCluster(Path out, List<ProgramProcess> programs) throws Exception {
+        Path home = options.home();
+        java.nio.file.Files.createDirectories(out);
+        try (DemoCluster members = step("starting " + options.clusterMembers() + " clustered space servers (rwe space"
+                + " --cluster), each its own process", () -> DemoCluster.start(options.clusterMembers(), out))) {
+            cluster = members;
+            String spaceUrl = members.spaceUrl();
+            say("space servers at " + spaceUrl + " (member logs in " + out + ")");
+            Simulators simulators = step("starting a simulated robot (motor + bumper modules in an arena) and a "
+                    + "simulated CM11A with an X10 appliance module at A3", () -> Simulators.start(home, this));
+            try (simulators;
+                 Capi feedSpace = MonitorSpace.open(spaceUrl);
+                 GroundTruthFeed groundTruth = GroundTruthFeed.start(simulators.robot, ROBOT, feedSpace,
+                         GroundTruthFeed.DEFAULT_PERIOD)) {
+                say("the robot's ground truth goes to " + groundTruth.containerName() + " for the monitor's world "
+                        + "view");
+                runWithSimulators(out, programs, spaceUrl, simulators);
+            } finally {
+                cluster = null;
+            }
+        }
+    }
+
+    /** Kills the first space server (the one every program talks to first) once, halfway through the run. */
+    private void killMemberHalfway(long until) throws InterruptedException {
+        if (cluster == null || memberKilled) {
+            return;
+        }
+        if (System.currentTimeMillis() >= until - options.run().toMillis() / 2) {
+            memberKilled = true;
+            long pid = cluster.kill(0);
+            say("killed the space server " + cluster.url(0) + " (pid " + pid + ", SIGKILL) while the robot drives;"
+                    + " the programs go on with the other members");
         }
     }
 
@@ -407,6 +453,11 @@ public final class Demo {
                 "-Drwe.port." + ROBOT + ".bus=" + sims.busPort, "-Drwe.port." + ENVIRONMENT + ".x10=" + sims.x10Port,
                 "-Drwe.call.timeout.ms=" + START_TIMEOUT.toMillis()));
         properties.addAll(safetySettings());
+        if (options.clusterMembers() > 0 && System.getProperty("rwe.command.timeout.ms") == null) {
+            // a member's failure pauses calls for up to a second or two: longer than the default command timeout,
+            // which would stop the actuators (safely) at every failover
+            properties.add("-Drwe.command.timeout.ms=" + CLUSTER_COMMAND_TIMEOUT_MS);
+        }
         step("running " + provider.mainClass() + " unchanged as the resource provider, then " + controller.mainClass()
                 + " with the control program for " + options.run().toSeconds() + " s", () -> {
             ProgramProcess providing = ProgramProcess.start(provider.destination(), provider.mainClass(), properties);
@@ -434,6 +485,7 @@ public final class Demo {
             while (System.currentTimeMillis() < until + 20_000 && controlling.isAlive()
                     && !controlling.output().contains("DEMO-END")) {
                 Thread.sleep(200);
+                killMemberHalfway(until);
                 long bumps = controlling.output().lines().filter(l -> l.startsWith("DEMO-BUMP")).count();
                 if (bumps > reported) {
                     reported = (int) bumps;

@@ -1,9 +1,9 @@
 package robotworld.explorer.monitor;
 
-import java.net.URI;
 import robotworld.core.RuntimeSettings;
 import robotworld.space.Capi;
 import robotworld.space.remote.RemoteSpace;
+import robotworld.space.remote.SpaceUrls;
 
 /** Opens the space a monitor watches: an explicit URL, else the override or the world's {@code <SpaceURL>}. */
 public final class MonitorSpace {
@@ -25,16 +25,14 @@ public final class MonitorSpace {
     }
 
     /**
-     * Connects to the space server at {@code url}, with the token of {@code rwe.space.token} if any.
+     * Connects to the space server at {@code url} (or to the servers of a clustered space, their URLs separated by
+     * commas: calls fail over between them), with the token of {@code rwe.space.token} if any.
      *
-     * @throws IllegalArgumentException for a URL that is not http(s)
-     * @throws robotworld.space.SpaceException when the server cannot be reached
+     * @throws IllegalArgumentException for a URL that is not http(s), naming it
+     * @throws robotworld.space.SpaceException when no server can be reached
      */
     public static Capi open(String url) {
-        URI uri = URI.create(url);
-        if (!"http".equals(uri.getScheme()) && !"https".equals(uri.getScheme())) {
-            throw new IllegalArgumentException("a space URL is http:// or https://, not " + url);
-        }
-        return RemoteSpace.open(uri, RemoteSpace.Options.defaults().token(RuntimeSettings.fromSystem().spaceToken()));
+        return RemoteSpace.open(SpaceUrls.parse(url),
+                RemoteSpace.Options.defaults().token(RuntimeSettings.fromSystem().spaceToken()));
     }
 }

@@ -97,6 +97,16 @@ final class AsyncCalls implements Runnable {
         selector.wakeup();
     }
 
+    /** The client moved on to another server: idle connections to the old one are of no use any more. */
+    void endpointChanged() {
+        execute(() -> {
+            SocketChannel channel;
+            while ((channel = idle.pollFirst()) != null) {
+                closeQuietly(channel);
+            }
+        });
+    }
+
     @Override
     public void run() {
         long nextCheck = System.nanoTime() + CHECK_NANOS;
@@ -223,6 +233,7 @@ final class AsyncCalls implements Runnable {
                     channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
                     channel.setOption(StandardSocketOptions.SO_KEEPALIVE, true);
                     Endpoint endpoint = owner.endpoint();
+                    connectedTo = endpoint;
                     if (!channel.connect(new InetSocketAddress(endpoint.host(), endpoint.port()))) {
                         key = channel.register(selector, SelectionKey.OP_CONNECT, this);
                         ioDeadline = Math.min(ioDeadline,
@@ -364,7 +375,14 @@ final class AsyncCalls implements Runnable {
             }
             if (answer.error != null) {
                 WireError kind = WireError.byKind(answer.error);
-                if (kind == WireError.STOPPING || kind == WireError.BUSY) {
+                if (kind == WireError.UNAVAILABLE) {
+                    // whether it took effect is not known: settle it like a broken connection
+                    if (connectedTo != null) {
+                        owner.failover(connectedTo);
+                    }
+                    cancelOnServer();
+                    finish(null, new robotworld.space.SpaceUnavailableException(owner.url(), answer.message, null));
+                } else if (kind == WireError.STOPPING || kind == WireError.BUSY) {
                     if (answer.written) {
                         goOnWithTake();
                     } else {
@@ -400,6 +418,8 @@ final class AsyncCalls implements Runnable {
 
         /** When this call's connection attempts started failing. */
         private long failingSince;
+        /** The server this call's last new connection went to. */
+        private Endpoint connectedTo;
 
         private long firstFailure() {
             if (failingSince == 0) {
@@ -438,6 +458,10 @@ final class AsyncCalls implements Runnable {
             }
             owner.acks().requeue(ackHeader);
             ackHeader = null;
+            boolean stale = reused && attempt == 0;
+            if (!stale && connectedTo != null) {
+                owner.failover(connectedTo); // with several servers, the cancel and what follows go to the next
+            }
             if (sent) {
                 cancelOnServer(); // whatever the lost take removed goes back
             }

@@ -155,6 +155,7 @@ final class EventStream {
         int attempt = 0;
         while (!closed) {
             HttpConnection stream = null;
+            Endpoint used = owner.endpoint();
             try {
                 long after;
                 synchronized (lock) {
@@ -188,6 +189,9 @@ final class EventStream {
             } catch (IOException | SpaceException e) {
                 if (!closed) {
                     LOG.log(System.Logger.Level.DEBUG, "notification stream broke: " + e);
+                    if (e instanceof IOException && stream == null) {
+                        owner.failover(used); // its server does not answer: with several, try the next one
+                    }
                 }
             } finally {
                 if (stream != null) {
@@ -209,7 +213,7 @@ final class EventStream {
     private boolean resumed;
 
     private HttpConnection open(long after) throws IOException {
-        Endpoint endpoint = owner.endpoint();
+        Endpoint endpoint = owner.endpoint(); // the next server if the last one failed
         HttpConnection stream = new HttpConnection(endpoint.host(), endpoint.port(),
                 owner.options.connectTimeoutMillis());
         try {

@@ -4,6 +4,7 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.net.URI;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -84,10 +85,13 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     private static final int BACKOFF_FIRST_MILLIS = 5;
     private static final int BACKOFF_MAX_MILLIS = 250;
 
-    private final Endpoint endpoint;
+    /** The servers of the space, in the order given; calls go to the current one and fail over to the next. */
+    private final List<Endpoint> endpoints;
+    private volatile int current;
+    private volatile Endpoint endpoint;
     final Options options;
     final WireContext wire;
-    final ConnectionPool pool;
+    volatile ConnectionPool pool;
     private final AckQueue acks;
     private final ScheduledExecutorService timer;
     final ExecutorService delivery;
@@ -97,14 +101,25 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     private final AtomicLong lastCall = new AtomicLong();
     /** Waiting calls in progress, by call id, so that close() can cancel them on the server. */
     private final Map<String, Boolean> waitingCalls = new ConcurrentHashMap<>();
+    /** Pools of servers this client failed over from: closed with the client (their calls may still use them). */
+    private final List<ConnectionPool> retired = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private static final System.Logger LOG = System.getLogger(RemoteSpace.class.getName());
     /** Takes that wait without a thread; created when first used. */
     private AsyncCalls asyncCalls;
     private volatile URI spaceUri;
     volatile long serverMaxWaitMillis = 20_000;
     private volatile boolean closed;
 
-    private RemoteSpace(URI url, Options options) {
-        this.endpoint = Endpoint.of(url, options.token());
+    private RemoteSpace(List<URI> urls, Options options) {
+        if (urls.isEmpty()) {
+            throw new IllegalArgumentException("no space URL given");
+        }
+        List<Endpoint> all = new ArrayList<>();
+        for (URI url : urls) {
+            all.add(Endpoint.of(url, options.token()));
+        }
+        this.endpoints = List.copyOf(all);
+        this.endpoint = endpoints.get(0);
         this.options = options;
         this.wire = WireContext.of(new WireLimits(Integer.MAX_VALUE - 64, 256, Integer.MAX_VALUE - 64,
                 Integer.MAX_VALUE, 1024, Integer.MAX_VALUE), CrefMapping.IDENTITY);
@@ -128,7 +143,20 @@ public final class RemoteSpace implements Capi, AsyncTakes {
      * @throws SpaceRequestRejectedException if it refuses the client (e.g. 401 without the right token)
      */
     public static RemoteSpace open(URI url, Options options) {
-        RemoteSpace space = new RemoteSpace(url, options);
+        return open(List.of(url), options);
+    }
+
+    /**
+     * Connects to a space served by several servers (the members of a cluster), trying them in the order given; a
+     * call whose server fails goes on with the next one within its own timeout, settling what the failed server may
+     * have done first (a take's entries go back, a write is not repeated if it happened). All servers must serve
+     * the same space.
+     *
+     * @throws SpaceUnavailableException     if none of the servers can be reached in time
+     * @throws SpaceRequestRejectedException if one refuses the client (e.g. 401 without the right token)
+     */
+    public static RemoteSpace open(List<URI> urls, Options options) {
+        RemoteSpace space = new RemoteSpace(urls, options);
         try {
             space.hello();
         } catch (RuntimeException e) {
@@ -138,9 +166,45 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         return space;
     }
 
-    /** The server's URL this client talks to. */
+    /** The URL of the server this client talks to now. */
     public URI url() {
         return endpoint.url();
+    }
+
+    /** The URLs of all the servers this client may talk to, in the order given. */
+    public List<URI> urls() {
+        List<URI> urls = new ArrayList<>();
+        for (Endpoint each : endpoints) {
+            urls.add(each.url());
+        }
+        return urls;
+    }
+
+    /**
+     * The server at {@code failed} did not answer (or is stopping): later calls go to the next server in the list.
+     * Nothing changes if there is only one, or another call has already moved on.
+     */
+    void failover(Endpoint failed) {
+        if (endpoints.size() < 2 || closed) {
+            return;
+        }
+        ConnectionPool old;
+        synchronized (this) {
+            if (endpoint != failed) {
+                return; // moved on already
+            }
+            current = (current + 1) % endpoints.size();
+            endpoint = endpoints.get(current);
+            old = pool;
+            pool = new ConnectionPool(endpoint, options.connectTimeoutMillis(), options.maxIdleConnections());
+            retired.add(old);
+            if (asyncCalls != null) {
+                asyncCalls.endpointChanged();
+            }
+        }
+        old.discardIdle();
+        LOG.log(System.Logger.Level.INFO, "space server " + failed.url() + " does not answer; going on with "
+                + endpoint.url());
     }
 
     @Override
@@ -399,10 +463,17 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         return message;
     }
 
-    /** Asks the server to cancel a call (a lost take's entries go back); one try within the network allowance. */
+    /**
+     * Asks the server to cancel a call (a lost take's entries go back at once, not when their hold runs out); one try
+     * per server within the network allowance: a server that does not answer moves the client on to the next one.
+     */
     void cancelQuietly(String callId) {
-        exchangeQuietly("cancel", null, callId, System.nanoTime()
-                + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
+        for (int i = 0; i < endpoints.size() && !closed && System.nanoTime() - deadline < 0; i++) {
+            if (exchangeQuietly("cancel", null, callId, deadline) != null) {
+                return;
+            }
+        }
     }
 
     /** The call id of the take of a writeThenTake whose write has id {@code callId}. */
@@ -460,6 +531,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         }
         closed = true;
         pool.close(); // breaks the waits of calls in progress: they throw SpaceClosedException
+        retired.forEach(ConnectionPool::close);
         synchronized (this) {
             if (asyncCalls != null) {
                 asyncCalls.close(); // takes waiting without a thread end with SpaceClosedException
@@ -546,6 +618,8 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             byte[] request = encode(body, callId, wait);
             long serverWait = wait.isInfinite() ? serverMaxWaitMillis : Math.min(wait.millis(), serverMaxWaitMillis);
             long readDeadline = now + TimeUnit.MILLISECONDS.toNanos(serverWait) + allowance;
+            Endpoint used = endpoint; // the server of this attempt (a failover may change it meanwhile)
+            ConnectionPool pool = this.pool;
             HttpConnection connection = null;
             boolean sent = false;
             String ackHeader = acks.drain();
@@ -557,7 +631,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             }
             try {
                 connection = pool.borrow(infinite ? readDeadline : Math.min(readDeadline, networkDeadline));
-                connection.send("POST", endpoint.path(operation), headers(ackHeader), request, request.length);
+                connection.send("POST", used.path(operation), headers(used, ackHeader), request, request.length);
                 sent = true;
                 HttpConnection.Response response = connection.receive(readDeadline, waits ? RemoteSpace::checkInterrupt
                         : () -> { });
@@ -565,11 +639,18 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 Answer answer = parseAnswer(response);
                 if (answer.error != null) {
                     WireError kind = WireError.byKind(answer.error);
+                    if (kind == WireError.UNAVAILABLE) {
+                        connection = null; // back in the pool: the exchange itself went well
+                        throw new ServerUnavailable(answer.message);
+                    }
                     if (kind == WireError.STOPPING || kind == WireError.BUSY) {
+                        if (kind == WireError.STOPPING) {
+                            failover(used); // another server of the space (if any) goes on
+                        }
                         if (answer.written) {
                             return answer; // the write happened: the caller takes on its own
                         }
-                        lastFailure = new SpaceUnavailableException(endpoint.url(), answer.message, null);
+                        lastFailure = new SpaceUnavailableException(used.url(), answer.message, null);
                         pool.discardIdle();
                     } else {
                         throw failure(response.status(), kind, answer);
@@ -609,8 +690,12 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 }
                 // a keep-alive connection the server closed while idle fails like this too; only calls whose
                 // outcome cannot be asked about rely on that guess
-                boolean stale = connection != null && connection.reused && !connection.hasBufferedInput();
+                boolean stale = !(e instanceof ServerUnavailable) && connection != null && connection.reused
+                        && !connection.hasBufferedInput();
                 pool.discardIdle(); // a broken connection usually means they are all broken (server restart)
+                if (!stale) {
+                    failover(used); // with several servers, settle and repeat the call with the next one
+                }
                 if (sent && (retry == Retry.REMOVAL || retry == Retry.WRITE || composite || !stale)) {
                     Answer settled = settleLostCall(operation, callId, retry, networkDeadline, e);
                     if (settled != null) {
@@ -630,7 +715,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 }
             }
             if (!infinite && System.nanoTime() - networkDeadline >= 0) {
-                throw new SpaceUnavailableException(endpoint.url(), "cannot reach the space server for " + operation,
+                throw new SpaceUnavailableException(used.url(), "cannot reach the space server for " + operation,
                         lastFailure);
             }
             backOff(attempt++, waits, infinite ? Long.MAX_VALUE : networkDeadline);
@@ -709,16 +794,22 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
     private Answer postQuietly(String operation, byte[] request, String ackHeader, long deadline) {
         HttpConnection connection = null;
+        Endpoint used = endpoint;
         try {
-            connection = new HttpConnection(endpoint.host(), endpoint.port(), pool.connectTimeout(deadline));
-            connection.send("POST", endpoint.path(operation), headers(ackHeader), request, request.length);
+            connection = new HttpConnection(used.host(), used.port(), pool.connectTimeout(deadline));
+            connection.send("POST", used.path(operation), headers(used, ackHeader), request, request.length);
             HttpConnection.Response response = connection.receive(Math.max(deadline,
                     System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(100)), () -> { });
             if (response.status() != 200) {
                 return null;
             }
             return parseAnswer(response);
-        } catch (IOException | SpaceException e) {
+        } catch (IOException e) {
+            if (!closed) {
+                failover(used); // a cancel or confirmation that cannot reach its server goes to the next one
+            }
+            return null;
+        } catch (SpaceException e) {
             return null;
         } finally {
             if (connection != null) {
@@ -732,10 +823,12 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             return true; // close() sends what is left
         }
         HttpConnection connection = null;
+        Endpoint used = endpoint;
+        ConnectionPool pool = this.pool;
         try {
             connection = pool.borrow(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
             byte[] body = {'{', '}'};
-            connection.send("POST", endpoint.path("ack"), headers(header), body, body.length);
+            connection.send("POST", used.path("ack"), headers(used, header), body, body.length);
             HttpConnection.Response response = connection.receive(System.nanoTime()
                     + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()), () -> { });
             pool.release(connection);
@@ -744,19 +837,26 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             if (connection != null) {
                 pool.discard(connection);
             }
+            failover(used);
             return false;
         }
     }
 
+    /**
+     * Asks a server which space it serves and its limits, trying the servers in turn within the network allowance;
+     * all of them must serve the same space.
+     */
     private void hello() {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
         Exception lastFailure = null;
         int attempt = 0;
         while (true) {
+            Endpoint used = endpoint;
+            ConnectionPool pool = this.pool;
             HttpConnection connection = null;
             try {
                 connection = pool.borrow(deadline);
-                connection.send("GET", endpoint.basePath(), endpoint.authorization(), null, 0);
+                connection.send("GET", used.basePath(), used.authorization(), null, 0);
                 HttpConnection.Response response = connection.receive(deadline, () -> { });
                 pool.release(connection);
                 Answer answer = parseAnswer(response);
@@ -776,9 +876,11 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                     pool.discard(connection);
                 }
                 lastFailure = e;
+                failover(used);
             }
             if (System.nanoTime() - deadline >= 0) {
-                throw new SpaceUnavailableException(endpoint.url(), "cannot reach the space server", lastFailure);
+                throw new SpaceUnavailableException(used.url(), endpoints.size() == 1 ? "cannot reach the space server"
+                        : "cannot reach any of the " + endpoints.size() + " space servers " + urls(), lastFailure);
             }
             backOff(attempt++, false, deadline);
         }
@@ -795,8 +897,12 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     }
 
     private String headers(String ackHeader) {
-        return ackHeader == null ? endpoint.authorization()
-                : endpoint.authorization() + robotworld.space.wire.Wire.ACK_HEADER + ": " + ackHeader + "\r\n";
+        return headers(endpoint, ackHeader);
+    }
+
+    private static String headers(Endpoint to, String ackHeader) {
+        return ackHeader == null ? to.authorization()
+                : to.authorization() + robotworld.space.wire.Wire.ACK_HEADER + ": " + ackHeader + "\r\n";
     }
 
     private byte[] encode(Body body, String callId, Timeout wait) {
@@ -836,6 +942,18 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     private static void checkInterrupt() throws InterruptedIOException {
         if (Thread.currentThread().isInterrupted()) {
             throw new CallerInterrupted();
+        }
+    }
+
+    /**
+     * The server answered that it could not complete the call (its cluster is recovering): handled like a broken
+     * connection, since whether the call took effect is not known.
+     */
+    private static final class ServerUnavailable extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        ServerUnavailable(String message) {
+            super("the server could not complete the call: " + message);
         }
     }
 

@@ -152,12 +152,13 @@ final class OperationsHandler extends Handler.Wrapper {
         if (header == null || header.isEmpty()) {
             return;
         }
-        int count = 0;
+        java.util.List<String> ids = new java.util.ArrayList<>();
         for (String id : header.split(",")) {
-            if (++count > MAX_ACKS_PER_REQUEST) {
+            if (ids.size() >= MAX_ACKS_PER_REQUEST) {
                 throw new ErrorAnswer(WireError.BAD_REQUEST, "more than " + MAX_ACKS_PER_REQUEST + " acks in one request");
             }
-            state.receipts.acknowledge(RequestFields.id(id.trim(), Wire.ACK_HEADER));
+            ids.add(RequestFields.id(id.trim(), Wire.ACK_HEADER));
         }
+        state.receipts.acknowledge(ids);
     }
 }

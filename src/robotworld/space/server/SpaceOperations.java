@@ -66,7 +66,7 @@ final class SpaceOperations {
             case "destroyContainer" -> state.space.destroyContainer(in.required(in.container, "container"));
             case "describe" -> describe(in, out);
             case "shift" -> shift(in, out);
-            case "ack" -> in.required(in.calls, "calls").forEach(state.receipts::acknowledge);
+            case "ack" -> state.receipts.acknowledge(in.required(in.calls, "calls"));
             case "cancel" -> cancel(in.required(in.call, "call"), out);
             case "subscribe" -> subscribe(in, out);
             case "unsubscribe" -> unsubscribe(in);

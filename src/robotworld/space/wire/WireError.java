@@ -35,6 +35,12 @@ public enum WireError {
     STOPPING(503, "stopping"),
     /** Too many calls are waiting on the server; the call had no effect. */
     BUSY(503, "busy"),
+    /**
+     * The server could not complete the call now (the cluster behind it is recovering, or its member is going away);
+     * whether it took effect is not known: the client settles it like a call whose connection broke, with this
+     * server or another one of the space.
+     */
+    UNAVAILABLE(503, "unavailable"),
     INTERNAL(500, "internal");
 
     private final int status;
@@ -89,6 +95,9 @@ public enum WireError {
         }
         if (failure instanceof robotworld.space.CallCancelledException) {
             return CANCELLED;
+        }
+        if (failure instanceof robotworld.space.SpaceUnavailableException) {
+            return UNAVAILABLE;
         }
         return INTERNAL;
     }

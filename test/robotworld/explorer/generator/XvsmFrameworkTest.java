@@ -120,6 +120,23 @@ class XvsmFrameworkTest {
         assertTrue(room.contains("public static final String HOST = \"[::1]\";"), room);
     }
 
+    /** A clustered space's servers, listed in the world, reach the program as one value its runtime fails over in. */
+    @Test
+    void severalSpaceServersGenerateAndBuild() throws Exception {
+        Path world = java.nio.file.Files.writeString(temp.resolve("cluster.xml"), java.nio.file.Files
+                .readString(CHAPTER5).replace("<SpaceURL>http://localhost:9876/space</SpaceURL>",
+                        "<SpaceURL>http://pc-a:9876/space, http://pc-b:9876/space,http://[::1]:9876/space</SpaceURL>"));
+        GenerationResult result = new FrameworkGenerator().generate(world, "DimRoom", null, temp.resolve("p"),
+                false, GenerationListener.SILENT);
+        GeneratedProject project = new GeneratedProject(result.destination());
+        String room = project.read("src/chapter5/DimRoom.java");
+        assertTrue(room.contains("public static final String SPACE_URL = "
+                + "\"http://pc-a:9876/space, http://pc-b:9876/space,http://[::1]:9876/space\";"), room);
+        assertEquals(3, robotworld.space.remote.SpaceUrls.parse(
+                "http://pc-a:9876/space, http://pc-b:9876/space,http://[::1]:9876/space").size());
+        project.antCompile();
+    }
+
     @Test
     void environmentViewpointOpensItsCm11a() throws Exception {
         GenerationResult result = new FrameworkGenerator().generate(CHAPTER5, "DimRoom", null, temp.resolve("p"),

@@ -47,7 +47,11 @@ class SpaceCommandTest {
         }
 
         URI awaitUrl() throws InterruptedException {
-            long deadline = System.nanoTime() + 10_000_000_000L;
+            return awaitUrl(10);
+        }
+
+        URI awaitUrl(int seconds) throws InterruptedException {
+            long deadline = System.nanoTime() + seconds * 1_000_000_000L;
             while (System.nanoTime() < deadline) {
                 Matcher matcher = URL.matcher(out.toString());
                 if (matcher.find()) {
@@ -64,6 +68,48 @@ class SpaceCommandTest {
             thread.join(10_000);
             return exit.get();
         }
+    }
+
+    /** Two cluster members started as a user would: what one member's server stores, the other's serves. */
+    @Test
+    @org.junit.jupiter.api.Timeout(180)
+    void membersOfAClusterServeOneSpace() throws Exception {
+        String name = "rwe-test-" + java.util.UUID.randomUUID().toString().substring(0, 8);
+        Running first = new Running("space", "--port", "0", "--cluster", name, "--member-port", "0");
+        URI firstUrl = first.awaitUrl(120);
+        Matcher member = Pattern.compile("cluster member of '" + name + "' at (\\S+),").matcher(first.out.toString());
+        assertTrue(member.find(), first.out.toString());
+        Running second = new Running("space", "--port", "0", "--cluster", name, "--member-port", "0",
+                "--member", member.group(1), "--min-members", "2");
+        try {
+            URI secondUrl = second.awaitUrl(120);
+            try (RemoteSpace one = RemoteSpace.open(firstUrl);
+                 RemoteSpace both = RemoteSpace.open(List.of(secondUrl, firstUrl), RemoteSpace.Options.defaults())) {
+                ContainerRef ref = one.createContainer(ContainerSpec.of(Order.FIFO).named("shared"));
+                one.write(ref, Timeout.TRY_ONCE, Entry.of("hello"));
+                ContainerRef found = both.lookupContainer("shared");
+                assertEquals(List.of(Entry.of("hello")), both.take(found, Timeout.TRY_ONCE));
+                assertEquals(secondUrl, both.url(), "served by the first server of its list");
+            }
+        } finally {
+            assertEquals(0, second.stop());
+            assertEquals(0, first.stop());
+        }
+        assertTrue(second.out.toString().contains("space server stopped"), second.out.toString());
+    }
+
+    @Test
+    void aClusterMemberNeedsOneAddressToAnnounce() throws Exception {
+        StringWriter err = new StringWriter();
+        int exit = Rwe.run(new PrintWriter(new StringWriter(), true), new PrintWriter(err, true), "space", "--port",
+                "0", "--bind", "0.0.0.0", "--cluster", "lab", "--member", "10.0.0.1:5701");
+        assertEquals(2, exit, err.toString());
+        assertTrue(err.toString().contains("--member-bind ADDR"), err.toString());
+        err.getBuffer().setLength(0);
+        exit = Rwe.run(new PrintWriter(new StringWriter(), true), new PrintWriter(err, true), "space", "--port", "0",
+                "--cluster", "lab", "--member", "10.0.0.1:port");
+        assertEquals(2, exit, err.toString());
+        assertTrue(err.toString().contains("not '10.0.0.1:port'"), err.toString());
     }
 
     @Test

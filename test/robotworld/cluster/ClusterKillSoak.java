@@ -1,0 +1,544 @@
+package robotworld.cluster;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.lang.management.ManagementFactory;
+import java.net.URI;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ThreadLocalRandom;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.LongAdder;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import robotworld.core.IRDistanceModule;
+import robotworld.space.Capi;
+import robotworld.space.ContainerRef;
+import robotworld.space.ContainerSpec;
+import robotworld.space.Entry;
+import robotworld.space.IntEntry;
+import robotworld.space.Notification;
+import robotworld.space.NotificationListener;
+import robotworld.space.NotificationMode;
+import robotworld.space.Operation;
+import robotworld.space.Order;
+import robotworld.space.Selector;
+import robotworld.space.SpaceException;
+import robotworld.space.SubscriptionEnd;
+import robotworld.space.Timeout;
+import robotworld.space.remote.RemoteSpace;
+import robotworld.xvsm.CallerSoak;
+import robotworld.xvsm.XVSMIRDistanceModuleLocal;
+import robotworld.xvsm.XVSMIRDistanceModuleRemote;
+import robotworld.xvsm.XVSMRuntime;
+
+/**
+ * Kill -9 soak of a 3-member clustered space ({@code ./antw bench-cluster-kill}): three {@code rwe space --cluster}
+ * processes; {@code bench.hosts} (20) computers with {@code bench.threads} (4) threads each make module calls
+ * ({@code getSingleSensor} of {@code bench.modules} IR modules whose answers name module and sensor), each computer
+ * a runtime whose client knows all three servers, starting with a different one; writers and takers pass numbered
+ * entries through a queue; monitors are subscribed to every operation on that queue. Then {@code bench.kills} (10)
+ * times: {@code kill -9} of one member (in turn), calls go on, the member is started again on its ports.
+ *
+ * <p>Prints per kill how long calls paused (per caller thread, the longest time between two answered calls around
+ * the kill), and at the end: mismatched answers, calls past their bound (call timeout plus the network allowance),
+ * failed calls by kind, acknowledged writes lost, entries taken twice, notification gaps signalled (a subscription
+ * ended OVERFLOWED: "events may be missing", then subscribed again) and silent gaps (a notification whose sequence
+ * does not follow the previous one's without such a signal).
+ */
+public final class ClusterKillSoak {
+
+    private static final int HOSTS = Integer.getInteger("bench.hosts", 20);
+    private static final int THREADS = Integer.getInteger("bench.threads", 4);
+    private static final int MODULES = Integer.getInteger("bench.modules", 4);
+    private static final int KILLS = Integer.getInteger("bench.kills", 10);
+    private static final int WRITERS = Integer.getInteger("bench.writers", 4);
+    private static final int MONITORS = Integer.getInteger("bench.monitors", 3);
+    private static final Duration CALL_TIMEOUT = Duration.ofSeconds(Integer.getInteger("bench.callTimeoutSeconds", 5));
+    private static final long ALLOWANCE_MILLIS = RemoteSpace.Options.defaults().networkAllowanceMillis();
+    private static final long SETTLE_MILLIS = Long.getLong("bench.settleMillis", 6_000);
+    private static final Pattern URL = Pattern.compile("listening on (http://\\S+)");
+    private static final Pattern MEMBER = Pattern.compile("cluster member of '[^']+' at (\\S+),");
+
+    private ClusterKillSoak() {
+    }
+
+    /** One {@code rwe space --cluster} process. */
+    private static final class Member {
+        final Process process;
+        final String url;
+        final String address;
+
+        Member(Process process, String url, String address) {
+            this.process = process;
+            this.url = url;
+            this.address = address;
+        }
+    }
+
+    private static final String CLUSTER = "rwe-soak-" + Long.toHexString(System.nanoTime());
+    private static Path logs;
+
+    private static Member startMember(int index, int httpPort, int memberPort, List<String> join) throws Exception {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.add("-Xmx256m");
+        for (String argument : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+            if (argument.startsWith("--add-")) {
+                command.add(argument);
+            }
+        }
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), "robotworld.explorer.cli.Rwe", "space",
+                "--cluster", CLUSTER, "--port", Integer.toString(httpPort), "--member-port",
+                Integer.toString(memberPort), "--min-members", "2"));
+        if (!join.isEmpty()) {
+            command.add("--member");
+            command.add(String.join(",", join));
+        }
+        Process process = new ProcessBuilder(command)
+                .redirectError(ProcessBuilder.Redirect.appendTo(logs.resolve("member-" + index + ".log").toFile()))
+                .start();
+        BufferedReader out = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
+        String url = null;
+        String address = null;
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+        while (url == null && System.nanoTime() < deadline) {
+            String line = out.readLine();
+            if (line == null) {
+                throw new IllegalStateException("member " + index + " ended; see " + logs);
+            }
+            Matcher m = MEMBER.matcher(line);
+            if (m.find()) {
+                address = m.group(1);
+            }
+            m = URL.matcher(line);
+            if (m.find()) {
+                url = m.group(1);
+            }
+        }
+        Thread drain = new Thread(() -> {
+            try {
+                while (out.readLine() != null) {
+                    // keep its pipe from filling
+                }
+            } catch (IOException e) {
+                // gone
+            }
+        }, "member-" + index + "-out");
+        drain.setDaemon(true);
+        drain.start();
+        return new Member(process, url, address);
+    }
+
+    private static int freePort() throws IOException {
+        for (int attempt = 0; attempt < 100; attempt++) {
+            int port = 20_000 + ThreadLocalRandom.current().nextInt(12_000);
+            try (java.net.ServerSocket probe = new java.net.ServerSocket(port, 1,
+                    java.net.InetAddress.getLoopbackAddress())) {
+                return port;
+            } catch (IOException taken) {
+                // another one
+            }
+        }
+        throw new IOException("no free port between 20000 and 32000");
+    }
+
+    /** Starts a killed member again on its ports, as an operator would; waits while the ports are still held. */
+    private static Member restartMember(int index, int httpPort, int memberPort, List<String> join) throws Exception {
+        for (int attempt = 1; ; attempt++) {
+            try {
+                return startMember(index, httpPort, memberPort, join);
+            } catch (IllegalStateException e) {
+                if (attempt == 10) {
+                    throw e;
+                }
+                Thread.sleep(1_000);
+            }
+        }
+    }
+
+    private static List<URI> rotated(List<Member> members, int first) {
+        List<URI> urls = new ArrayList<>();
+        for (int i = 0; i < members.size(); i++) {
+            urls.add(URI.create(members.get((first + i) % members.size()).url));
+        }
+        return urls;
+    }
+
+    private static int port(String hostPort) {
+        return Integer.parseInt(hostPort.substring(hostPort.lastIndexOf(':') + 1));
+    }
+
+    // ---- what the workload records ----
+
+    /** Times (nanoTime) of each caller thread's answered calls. */
+    private static final List<ConcurrentLinkedQueue<Long>> answered = new ArrayList<>();
+    private static final AtomicLong mismatches = new AtomicLong();
+    private static final AtomicLong pastBound = new AtomicLong();
+    private static final AtomicLong longestCall = new AtomicLong();
+    private static final LongAdder calls = new LongAdder();
+    private static final Map<String, LongAdder> failures = new ConcurrentHashMap<>();
+    private static final AtomicBoolean running = new AtomicBoolean(true);
+    private static final LongAdder gapsSignalled = new LongAdder();
+    private static final LongAdder silentGaps = new LongAdder();
+    private static final LongAdder notifications = new LongAdder();
+    private static final List<String> silentGapDetails = Collections.synchronizedList(new ArrayList<>());
+
+    public static void main(String[] args) throws Exception {
+        logs = Files.createTempDirectory("rwe-kill-soak");
+        System.out.printf(Locale.ROOT, "Kill -9 soak: 3 cluster members as processes (rwe space --cluster), %d hosts"
+                + " x %d threads making module calls (timeout %d s) on %d modules, %d writers, %d monitors, %d kills;"
+                + " %s, %d CPUs; member logs in %s%n", HOSTS, THREADS, CALL_TIMEOUT.toSeconds(), MODULES, WRITERS,
+                MONITORS, KILLS, System.getProperty("java.vm.version"), Runtime.getRuntime().availableProcessors(),
+                logs);
+        List<Member> members = new ArrayList<>();
+        List<AutoCloseable> closing = new ArrayList<>();
+        ExecutorService threads = Executors.newCachedThreadPool(r -> {
+            Thread t = new Thread(r);
+            t.setDaemon(true);
+            return t;
+        });
+        try {
+            // ports below the ephemeral range, so that a killed member's ports are not handed to some client's
+            // connection meanwhile and it can start again on them
+            members.add(startMember(0, freePort(), freePort(), List.of()));
+            members.add(startMember(1, freePort(), freePort(), List.of(members.get(0).address)));
+            members.add(startMember(2, freePort(), freePort(), List.of(members.get(0).address,
+                    members.get(1).address)));
+            System.out.println("members: " + members.stream().map(m -> m.url + " (" + m.address + ")").toList());
+            Thread.sleep(3_000); // partitions spread over the three
+
+            RemoteSpace.Options options = RemoteSpace.Options.defaults();
+            // providers: each module served by its own runtime
+            for (int m = 0; m < MODULES; m++) {
+                XVSMRuntime provider = XVSMRuntime.using(RemoteSpace.open(rotated(members, m), options),
+                        "robot-" + m, true);
+                closing.add(provider);
+                new XVSMIRDistanceModuleLocal(provider, "Robot" + m, "IR", new CallerSoak.NamedDistances(m), false);
+            }
+            // callers
+            for (int h = 0; h < HOSTS; h++) {
+                XVSMRuntime host = XVSMRuntime.using(RemoteSpace.open(rotated(members, h), options), "host-" + h,
+                        true);
+                closing.add(host);
+                for (int t = 0; t < THREADS; t++) {
+                    ConcurrentLinkedQueue<Long> times = new ConcurrentLinkedQueue<>();
+                    answered.add(times);
+                    List<XVSMIRDistanceModuleRemote> modules = new ArrayList<>();
+                    for (int m = 0; m < MODULES; m++) {
+                        XVSMIRDistanceModuleRemote remote = new XVSMIRDistanceModuleRemote(host, "Robot" + m, "IR");
+                        remote.setCallTimeout(CALL_TIMEOUT);
+                        modules.add(remote);
+                    }
+                    threads.execute(() -> callModules(modules, times));
+                }
+            }
+            // queue traffic: writers, takers, monitors
+            RemoteSpace setup = RemoteSpace.open(rotated(members, 0), options);
+            closing.add(setup);
+            ContainerRef queue = setup.lookupOrCreateContainer(ContainerSpec.of(Order.FIFO).named("soak-queue"));
+            List<Monitor> monitors = new ArrayList<>();
+            for (int i = 0; i < MONITORS; i++) {
+                RemoteSpace client = RemoteSpace.open(rotated(members, i), options);
+                closing.add(client);
+                Monitor monitor = new Monitor(client, queue, threads);
+                monitors.add(monitor);
+                monitor.subscribe();
+            }
+            List<Set<Long>> acknowledged = new ArrayList<>();
+            List<java.util.concurrent.Future<?>> writersDone = new ArrayList<>();
+            for (int w = 0; w < WRITERS; w++) {
+                RemoteSpace client = RemoteSpace.open(rotated(members, w), options);
+                closing.add(client);
+                Set<Long> mine = ConcurrentHashMap.newKeySet();
+                acknowledged.add(mine);
+                int writer = w;
+                writersDone.add(threads.submit(() -> write(client, queue, writer, mine)));
+            }
+            ConcurrentLinkedQueue<Long> taken = new ConcurrentLinkedQueue<>();
+            List<java.util.concurrent.Future<?>> takersDone = new ArrayList<>();
+            for (int k = 0; k < 2; k++) {
+                RemoteSpace client = RemoteSpace.open(rotated(members, k + 1), options);
+                closing.add(client);
+                takersDone.add(threads.submit(() -> take(client, queue, taken)));
+            }
+
+            Thread.sleep(5_000);
+            List<Long> pauses = new ArrayList<>();
+            List<Long> resumes = new ArrayList<>();
+            for (int kill = 0; kill < KILLS; kill++) {
+                int victim = kill % members.size();
+                Member dead = members.get(victim);
+                long killedAt = System.nanoTime();
+                dead.process.destroyForcibly(); // SIGKILL
+                dead.process.waitFor(30, TimeUnit.SECONDS);
+                Thread.sleep(SETTLE_MILLIS);
+                long resumed = resumedAfter(killedAt);
+                resumes.add(resumed);
+                long pause = longestPause(killedAt - TimeUnit.SECONDS.toNanos(1),
+                        killedAt + TimeUnit.MILLISECONDS.toNanos(SETTLE_MILLIS));
+                pauses.add(pause);
+                System.out.printf(Locale.ROOT, "kill %2d: member %d (%s) killed; calls back to half their rate after"
+                        + " %,d ms (%d = not within the %d ms watched); longest wait of one caller thread %,d ms; %,d calls answered so far%n", kill + 1,
+                        victim, dead.address, TimeUnit.NANOSECONDS.toMillis(resumed), SETTLE_MILLIS, SETTLE_MILLIS,
+                        TimeUnit.NANOSECONDS.toMillis(pause), calls.sum());
+                List<String> others = new ArrayList<>();
+                for (Member other : members) {
+                    if (other != dead) {
+                        others.add(other.address);
+                    }
+                }
+                others.add(dead.address);
+                members.set(victim, restartMember(victim, port(URI.create(dead.url).getAuthority()),
+                        port(dead.address), others));
+                Thread.sleep(SETTLE_MILLIS); // partitions move back to it
+            }
+            running.set(false);
+            for (java.util.concurrent.Future<?> done : writersDone) {
+                done.get(60, TimeUnit.SECONDS);
+            }
+            for (java.util.concurrent.Future<?> done : takersDone) {
+                done.get(60, TimeUnit.SECONDS);
+            }
+            // takes whose answers were lost are held for their lease (10 s): then their entries are back
+            Thread.sleep(12_000);
+            drain(setup, queue, taken);
+            threads.shutdown();
+            threads.awaitTermination(CALL_TIMEOUT.toSeconds() + ALLOWANCE_MILLIS / 1000 + 10, TimeUnit.SECONDS);
+
+            List<Long> takenList = new ArrayList<>(taken);
+            Set<Long> takenSet = new HashSet<>(takenList);
+            long lost = 0;
+            long written = 0;
+            for (Set<Long> mine : acknowledged) {
+                written += mine.size();
+                for (Long value : mine) {
+                    if (!takenSet.contains(value)) {
+                        lost++;
+                    }
+                }
+            }
+            long duplicates = takenList.size() - takenSet.size();
+            long[] sorted = pauses.stream().mapToLong(TimeUnit.NANOSECONDS::toMillis).sorted().toArray();
+            Map<String, Long> failed = new java.util.TreeMap<>();
+            failures.forEach((kind, n) -> failed.put(kind, n.sum()));
+            System.out.printf(Locale.ROOT, "%nmodule calls answered: %,d; mismatched answers: %d; failed: %s%n",
+                    calls.sum(), mismatches.get(), failed.isEmpty() ? "none" : failed);
+            System.out.printf(Locale.ROOT, "longest call: %,d ms; calls past their bound (%d s timeout + %d s "
+                    + "allowance): %d%n", longestCall.get(), CALL_TIMEOUT.toSeconds(), ALLOWANCE_MILLIS / 1000,
+                    pastBound.get());
+            long[] back = resumes.stream().mapToLong(TimeUnit.NANOSECONDS::toMillis).sorted().toArray();
+            System.out.printf(Locale.ROOT, "calls back to half their rate after a kill (ms): median %d, max %d, all"
+                    + " %s%n", back[back.length / 2], back[back.length - 1], Arrays.toString(back));
+            System.out.printf(Locale.ROOT, "longest wait of one caller thread per kill (ms; a call in flight on the"
+                    + " killed member may wait out its timeout): median %d, max %d, all %s%n",
+                    sorted[sorted.length / 2], sorted[sorted.length - 1], Arrays.toString(sorted));
+            System.out.printf(Locale.ROOT, "queue: %,d writes acknowledged, %,d entries taken, acknowledged writes "
+                    + "lost: %d, entries taken twice: %d%n", written, takenList.size(), lost, duplicates);
+            System.out.printf(Locale.ROOT, "monitors: %,d notifications, gaps signalled (subscription ended "
+                    + "OVERFLOWED, subscribed again): %d, silent gaps: %d %s%n", notifications.sum(),
+                    gapsSignalled.sum(), silentGaps.sum(), silentGapDetails.isEmpty() ? ""
+                            : silentGapDetails.subList(0, Math.min(5, silentGapDetails.size())));
+            boolean met = mismatches.get() == 0 && pastBound.get() == 0 && lost == 0 && duplicates == 0
+                    && silentGaps.sum() == 0 && back[back.length - 1] <= 2_000;
+            System.out.println("verdict: zero mismatches, none past its bound, none lost or taken twice, no silent"
+                    + " gap, calls back to half their rate within 2 s after every kill: " + (met ? "met" : "NOT met"));
+        } finally {
+            running.set(false);
+            Collections.reverse(closing);
+            for (AutoCloseable each : closing) {
+                try {
+                    each.close();
+                } catch (Exception e) {
+                    // going anyway
+                }
+            }
+            for (Member member : members) {
+                member.process.destroyForcibly();
+            }
+        }
+        System.exit(0);
+    }
+
+    private static void callModules(List<XVSMIRDistanceModuleRemote> modules, ConcurrentLinkedQueue<Long> times) {
+        while (running.get()) {
+            int module = ThreadLocalRandom.current().nextInt(modules.size());
+            int sensor = 1 + ThreadLocalRandom.current().nextInt(IRDistanceModule.SENSORS);
+            long started = System.nanoTime();
+            try {
+                int distance = modules.get(module).getSingleSensor(sensor);
+                if (distance != CallerSoak.NamedDistances.distance(module, sensor)) {
+                    mismatches.incrementAndGet();
+                }
+                calls.increment();
+                times.add(System.nanoTime());
+            } catch (RuntimeException e) {
+                failures.computeIfAbsent(e.getClass().getSimpleName(), k -> new LongAdder()).increment();
+            }
+            long millis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
+            longestCall.accumulateAndGet(millis, Math::max);
+            if (millis > CALL_TIMEOUT.toMillis() + ALLOWANCE_MILLIS) {
+                pastBound.incrementAndGet();
+            }
+        }
+    }
+
+    /**
+     * How long after {@code killedAt} the answered calls of all threads together first reach half the rate they had
+     * in the 3 s before (over a sliding 500 ms window).
+     */
+    private static long resumedAfter(long killedAt) {
+        List<Long> all = new ArrayList<>();
+        for (ConcurrentLinkedQueue<Long> times : answered) {
+            all.addAll(times);
+        }
+        Collections.sort(all);
+        long window = TimeUnit.MILLISECONDS.toNanos(500);
+        long before = all.stream().filter(t -> t >= killedAt - TimeUnit.SECONDS.toNanos(3) && t < killedAt).count();
+        double wanted = before / 6.0 / 2; // half of the calls of an average 500 ms before the kill
+        int from = 0;
+        for (int to = 0; to < all.size(); to++) {
+            long at = all.get(to);
+            if (at < killedAt) {
+                continue;
+            }
+            while (all.get(from) < at - window) {
+                from++;
+            }
+            if (at - killedAt >= window && to - from + 1 >= wanted) {
+                return at - killedAt;
+            }
+        }
+        return TimeUnit.MILLISECONDS.toNanos(SETTLE_MILLIS);
+    }
+
+    /** Per caller thread, the longest time without an answered call within [from, to]; the longest of them all. */
+    private static long longestPause(long from, long to) {
+        long longest = 0;
+        for (ConcurrentLinkedQueue<Long> times : answered) {
+            long previous = from;
+            for (Long at : times) {
+                if (at < from) {
+                    continue;
+                }
+                if (at > to) {
+                    break;
+                }
+                longest = Math.max(longest, at - previous);
+                previous = at;
+            }
+            longest = Math.max(longest, Math.max(0, Math.min(to, System.nanoTime()) - previous));
+            times.removeIf(at -> at < to - TimeUnit.SECONDS.toNanos(1));
+        }
+        return longest;
+    }
+
+    private static void write(Capi client, ContainerRef queue, int writer, Set<Long> acknowledged) {
+        for (long i = 1; running.get(); i++) {
+            long value = writer * 1_000_000_000L + i;
+            try {
+                client.write(queue, Timeout.TRY_ONCE, Entry.of(value));
+                acknowledged.add(value);
+            } catch (SpaceException e) {
+                // outcome unknown: not counted as acknowledged (it may still be there)
+            }
+            sleep(10);
+        }
+    }
+
+    private static void take(Capi client, ContainerRef queue, ConcurrentLinkedQueue<Long> taken) {
+        while (running.get()) {
+            try {
+                for (Entry entry : client.take(queue, Timeout.ofMillis(1_000), Selector.fifo(5))) {
+                    taken.add(((IntEntry) entry).value());
+                }
+            } catch (SpaceException e) {
+                // nothing there yet, or the server moves: what a lost take held comes back after its lease
+            }
+        }
+    }
+
+    private static void drain(Capi client, ContainerRef queue, ConcurrentLinkedQueue<Long> taken) {
+        for (Entry entry : client.take(queue, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL))) {
+            taken.add(((IntEntry) entry).value());
+        }
+    }
+
+    /**
+     * A subscriber to every operation on the queue, as a monitor is: notifications must follow each other by
+     * sequence; when its subscription ends OVERFLOWED (events may be missing), it counts the signal and subscribes
+     * again.
+     */
+    private static final class Monitor implements NotificationListener {
+        private final Capi client;
+        private final ContainerRef queue;
+        private final ExecutorService threads;
+        private long last = -1;
+
+        Monitor(Capi client, ContainerRef queue, ExecutorService threads) {
+            this.client = client;
+            this.queue = queue;
+            this.threads = threads;
+        }
+
+        void subscribe() {
+            synchronized (this) {
+                last = -1;
+            }
+            while (running.get()) {
+                try {
+                    client.subscribe(queue, Operation.any(), NotificationMode.INFINITE, Timeout.INFINITE, this);
+                    return;
+                } catch (SpaceException e) {
+                    sleep(100);
+                }
+            }
+        }
+
+        @Override
+        public synchronized void onNotification(Notification notification) {
+            notifications.increment();
+            if (last >= 0 && notification.sequence() != last + 1) {
+                silentGaps.increment();
+                silentGapDetails.add(last + "->" + notification.sequence() + " " + notification.operation());
+            }
+            last = notification.sequence();
+        }
+
+        @Override
+        public void onEnd(SubscriptionEnd reason) {
+            if (reason == SubscriptionEnd.OVERFLOWED) {
+                gapsSignalled.increment();
+            }
+            if (running.get()) {
+                threads.execute(this::subscribe);
+            }
+        }
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}
