@@ -110,6 +110,9 @@ public final class ModuleGrowthBenchmark {
             counts.merge(role, 1, Integer::sum);
             counts.merge("all", 1, Integer::sum);
         }
+        if (Boolean.getBoolean("bench.growth.listThreads")) {
+            System.out.println(Thread.getAllStackTraces().keySet().stream().map(Thread::getName).sorted().toList());
+        }
         return counts;
     }
 
