@@ -99,7 +99,9 @@ public final class CallerSoak {
                 modules.add(remote);
             }
             Thread thread = new Thread(() -> {
-                long[] mine = new long[1 << 16];
+                // small at first: a 512 KB array per caller is a humongous object for G1 and would, for a
+                // thousand callers, take half the heap and tax the high phase with collections of its own making
+                long[] mine = new long[1 << 10];
                 int count = 0;
                 try {
                     while (running.get()) {

@@ -20,7 +20,7 @@ import robotworld.space.server.SpaceServer;
  * one caller program calling a random one of them, for N = 1, 100 and 1 000 ({@code bench.growth.modules}). Prints
  * the module-call p50 and p99 for each N (median of {@code bench.growth.runs} runs of {@code bench.growth.calls}
  * calls) and the threads of the process by role, taken while every module waits, after the threads started for the
- * start-up burst have ended (11 s, {@code bench.growth.settleMillis}): the server's ({@code space-server*}), the
+ * start-up burst have ended (21 s, {@code bench.growth.settleMillis}): the server's ({@code space-server*}), the
  * space clients' ({@code space-client*}) and the Local sides' ({@code xvsm-serve*}).
  */
 public final class ModuleGrowthBenchmark {
@@ -72,8 +72,9 @@ public final class ModuleGrowthBenchmark {
             while (System.nanoTime() < warmUntil) {
                 callRandom(remotes);
             }
-            // threads started for the start-up burst (a thousand connections at once) end after 10 s idle
-            Thread.sleep(Long.getLong("bench.growth.settleMillis", 11_000));
+            // threads the server started for the start-up burst (a thousand connections accepted at once) end
+            // after 10 s idle, a few at a time: after 11 s some were still there (30 threads against 23)
+            Thread.sleep(Long.getLong("bench.growth.settleMillis", 21_000));
             Map<String, Integer> threads = threadsByRole();
             List<Double> p50s = new ArrayList<>();
             List<Double> p99s = new ArrayList<>();
@@ -109,6 +110,9 @@ public final class ModuleGrowthBenchmark {
                     : name.startsWith("xvsm-serve") ? "serving" : "other";
             counts.merge(role, 1, Integer::sum);
             counts.merge("all", 1, Integer::sum);
+        }
+        if (Boolean.getBoolean("bench.growth.listThreads")) {
+            System.out.println(Thread.getAllStackTraces().keySet().stream().map(Thread::getName).sorted().toList());
         }
         return counts;
     }

@@ -6,6 +6,7 @@ import java.util.Set;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.Executor;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 
@@ -130,7 +131,11 @@ final class RemoteSubscription implements Subscription {
 
     private void scheduleDrain() {
         if (draining.compareAndSet(false, true)) {
-            delivery.execute(this::drain);
+            try {
+                delivery.execute(this::drain);
+            } catch (RejectedExecutionException closing) {
+                drain(); // the space is closing and its delivery threads are gone: the listener still hears the end
+            }
         }
     }
 

@@ -99,7 +99,9 @@ final class Exchange {
             response.getHeaders().put(HttpHeader.CONTENT_TYPE, Wire.MEDIA_TYPE);
             response.getHeaders().put(HttpHeader.CONTENT_LENGTH, body.size());
             // the client may be gone: an unconfirmed take then comes back when its lease runs out
-            response.write(true, ByteBuffer.wrap(body.toByteArray()), callback);
+            ByteBuffer bytes = ByteBuffer.wrap(body.toByteArray());
+            // once written, the connection reads on here rather than on a woken pool thread
+            ResumeInPlace.answering(() -> response.write(true, bytes, callback));
         } catch (RuntimeException e) {
             LOG.log(Level.DEBUG, "cannot answer a space request: " + e);
             callback.failed(e);

@@ -5,6 +5,7 @@ import java.net.InetAddress;
 import java.net.URI;
 import java.net.UnknownHostException;
 import java.util.List;
+import java.util.concurrent.Executor;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -90,7 +91,11 @@ public final class SpaceServer implements AutoCloseable {
         http.setRequestHeaderSize(16 * 1024); // room for a batch of take confirmations (Space-Ack)
         // operations run on the selector threads (they never block): one selector per CPU, up to two
         int selectors = Math.min(2, Runtime.getRuntime().availableProcessors());
-        ServerConnector connector = new ServerConnector(jetty, 1, selectors, new HttpConnectionFactory(http));
+        boolean ownsSpace = space == null;
+        // a connection answered from another thread reads on, on that thread, when the engine never blocks
+        Executor connections = ownsSpace || !space.callsMayBlock() ? new ResumeInPlace(threads) : threads;
+        ServerConnector connector = new ServerConnector(jetty, connections, null, null, 1, selectors,
+                new HttpConnectionFactory(http));
         connector.setHost(options.bindAddress());
         connector.setPort(options.port());
         connector.setAcceptQueueSize(1024); // a provider starting a thousand modules connects all at once
@@ -105,7 +110,6 @@ public final class SpaceServer implements AutoCloseable {
         int port = connector.getLocalPort();
         URI publicUri = options.publicUri() != null ? options.publicUri()
                 : URI.create("http://" + uriHost(options.bindAddress()) + ":" + port + options.path());
-        boolean ownsSpace = space == null;
         SpaceEngine served = ownsSpace ? EmbeddedSpace.open(publicUri, options.notificationQueue()) : space;
         // crefs carry the server's URL, unless the space has one URI on every server in front of it (a cluster)
         URI crefUri = served.sharedUri() ? served.spaceUri() : publicUri;
