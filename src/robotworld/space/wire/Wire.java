@@ -5,6 +5,7 @@ import java.util.Locale;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.StreamReadConstraints;
+import com.fasterxml.jackson.core.util.JsonRecyclerPools;
 
 import robotworld.space.EntryType;
 import robotworld.space.NotificationMode;
@@ -40,6 +41,10 @@ public final class Wire {
                 .streamReadConstraints(constraints)
                 .enable(com.fasterxml.jackson.core.StreamReadFeature.STRICT_DUPLICATE_DETECTION)
                 .disable(JsonFactory.Feature.INTERN_FIELD_NAMES)
+                // buffers shared through a pool, not one set per thread: the server writes an answer to a waiting
+                // call while the answer of the call that satisfied it is open on the same thread, and with
+                // per-thread buffers that second writer allocated 16 KB of fresh buffers each time
+                .recyclerPool(JsonRecyclerPools.newConcurrentDequePool())
                 .build()
                 .disable(JsonParser.Feature.AUTO_CLOSE_SOURCE);
     }
