@@ -476,9 +476,21 @@ public final class ClusterKillSoak {
         }
     }
 
+    /** Takes what is left; tries again for a while if the cluster is still busy settling the last restart. */
     private static void drain(Capi client, ContainerRef queue, ConcurrentLinkedQueue<Long> taken) {
-        for (Entry entry : client.take(queue, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL))) {
-            taken.add(((IntEntry) entry).value());
+        for (int attempt = 1; ; attempt++) {
+            try {
+                for (Entry entry : client.take(queue, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL))) {
+                    taken.add(((IntEntry) entry).value());
+                }
+                return;
+            } catch (SpaceException e) {
+                if (attempt == 30) {
+                    throw e;
+                }
+                System.out.println("draining the queue: " + e.getMessage() + "; again in 1 s");
+                sleep(1_000);
+            }
         }
     }
 

@@ -728,12 +728,13 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             case IDEMPOTENT:
                 return null;
             case REMOVAL:
-                exchangeQuietly("cancel", null, callId, Math.min(deadline, System.nanoTime()
-                        + TimeUnit.MILLISECONDS.toNanos(200))); // if it happened, its entries go back
+                // if it happened, its entries go back (now, not when their hold runs out: the repeated call or
+                // another caller may be waiting for them); repeated until a server answers, the next one if the
+                // last one failed
+                cancelUntil(callId, deadline);
                 return null;
             case WRITE_THEN_TAKE:
-                exchangeQuietly("cancel", null, takeId(callId), Math.min(deadline, System.nanoTime()
-                        + TimeUnit.MILLISECONDS.toNanos(200))); // the take never counts: its entries go back
+                cancelUntil(takeId(callId), deadline); // the take never counts: its entries go back
                 // then as a write: "completed" tells the caller to take on its own
                 return settleLostCall(operation, callId, Retry.WRITE, deadline, cause);
             case WRITE:
