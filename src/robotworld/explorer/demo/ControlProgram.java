@@ -83,6 +83,9 @@ public final class ControlProgram {
                 }
             } catch (InterruptedException stopped) {
                 Thread.currentThread().interrupt();
+            } catch (RuntimeException failed) {
+                System.out.println("DEMO-FAILED " + failed);
+                throw failed;
             } finally {
                 MotorModule1.setMotor(LEFT, 0);
                 MotorModule1.setMotor(RIGHT, 0);

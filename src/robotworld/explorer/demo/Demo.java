@@ -497,6 +497,9 @@ public final class Demo {
             summary.lampOffFrames = sims.off.get();
             String output = controlling.output();
             readStatistics(output);
+            if (output.contains("DEMO-FAILED")) {
+                throw new IllegalStateException("the control program failed; its log:\n" + controlling.tail(20));
+            }
             if (!output.contains("DEMO-END")) {
                 throw new IllegalStateException("the control program did not finish in time; its log:\n"
                         + controlling.tail(20));
