@@ -35,13 +35,36 @@ public record BusTiming(Duration responseTimeout, int attempts, Duration interBy
         }
     }
 
+    /** The setting that changes the default response timeout, in milliseconds. */
+    public static final String RESPONSE_TIMEOUT_PROPERTY = "rwe.bus.timeout.ms";
+
     /**
-     * Defaults for real modules: 100 ms to start a reply, 3 attempts, 20 ms inside a reply, 8 ms scan allowance,
-     * the 3.5-character frame gap, 5 s for a servo move.
+     * Defaults for real modules: 100 ms to start a reply (or {@value #RESPONSE_TIMEOUT_PROPERTY}, for modules
+     * reached through something slower than a serial line, such as a simulator on a busy machine), 3 attempts,
+     * 20 ms inside a reply, 8 ms scan allowance, the 3.5-character frame gap, 5 s for a servo move.
+     *
+     * @throws IllegalArgumentException when {@value #RESPONSE_TIMEOUT_PROPERTY} is set but not a positive number
      */
     public static BusTiming defaults() {
-        return new BusTiming(Duration.ofMillis(100), 3, Duration.ofMillis(20), Duration.ofMillis(8), AUTO_FRAME_GAP,
-                Duration.ofSeconds(5));
+        return new BusTiming(defaultResponseTimeout(), 3, Duration.ofMillis(20), Duration.ofMillis(8),
+                AUTO_FRAME_GAP, Duration.ofSeconds(5));
+    }
+
+    private static Duration defaultResponseTimeout() {
+        String value = System.getProperty(RESPONSE_TIMEOUT_PROPERTY);
+        if (value == null || value.isBlank()) {
+            return Duration.ofMillis(100);
+        }
+        try {
+            long millis = Long.parseLong(value.strip());
+            if (millis >= 1) {
+                return Duration.ofMillis(millis);
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new IllegalArgumentException(RESPONSE_TIMEOUT_PROPERTY + " must be a number of milliseconds of at "
+                + "least 1, was '" + value + "'");
     }
 
     public BusTiming withResponseTimeout(Duration timeout) {

@@ -72,6 +72,8 @@ public final class Demo {
     private static final int STEPS = 9;
     /** How long after its start the control program is killed with --kill-control (at most half the run). */
     private static final Duration KILL_AFTER = Duration.ofSeconds(4);
+    /** The bus response timeout of the demo's programs (the simulated robot's modules): see runPrograms. */
+    private static final int SIMULATOR_BUS_TIMEOUT_MS = 1_000;
 
     private final DemoOptions options;
     /** The safety command timeout of a clustered demo's programs: longer than a failover's pause. */
@@ -452,6 +454,10 @@ public final class Demo {
         List<String> properties = new ArrayList<>(List.of("-Drwe.space.url=" + spaceUrl,
                 "-Drwe.port." + ROBOT + ".bus=" + sims.busPort, "-Drwe.port." + ENVIRONMENT + ".x10=" + sims.x10Port,
                 "-Drwe.call.timeout.ms=" + START_TIMEOUT.toMillis()));
+        // the robot is a simulator in another program, not a module on a serial line: on a busy machine it can take
+        // longer than a real module's 100 ms to answer, and the demo must not fail for that
+        properties.add("-D" + BusTiming.RESPONSE_TIMEOUT_PROPERTY + "="
+                + System.getProperty(BusTiming.RESPONSE_TIMEOUT_PROPERTY, String.valueOf(SIMULATOR_BUS_TIMEOUT_MS)));
         properties.addAll(safetySettings());
         if (options.clusterMembers() > 0 && System.getProperty("rwe.command.timeout.ms") == null) {
             // a member's failure pauses calls for up to a second or two: longer than the default command timeout,
