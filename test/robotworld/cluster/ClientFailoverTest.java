@@ -123,12 +123,14 @@ class ClientFailoverTest {
         RemoteSpace consumer = client(0);
         ContainerRef queue = producer.createContainer(ContainerSpec.of(Order.FIFO).named("work"));
         AtomicBoolean stop = new AtomicBoolean();
+        java.util.concurrent.atomic.AtomicLong acks = new java.util.concurrent.atomic.AtomicLong();
         Future<List<Long>> written = threads.submit(() -> {
             List<Long> acknowledged = new ArrayList<>();
             for (long i = 1; !stop.get(); i++) {
                 try {
                     producer.write(queue, Timeout.TRY_ONCE, Entry.of(i));
                     acknowledged.add(i);
+                    acks.incrementAndGet();
                 } catch (SpaceException e) {
                     // outcome unknown: not counted, but it must not be taken twice either
                 }
@@ -146,9 +148,11 @@ class ClientFailoverTest {
             }
             return got;
         });
-        Thread.sleep(1_500);
+        // counted, not timed: a busy machine may write slowly, but the producer must go on after the failure
+        awaitAcks(acks, 20, "before the failure");
+        long atKill = acks.get();
         kill(0);
-        Thread.sleep(3_000);
+        awaitAcks(acks, atKill + 50, "after the failure (" + atKill + " before it)");
         stop.set(true);
         List<Long> acknowledged = written.get(SOON.toMillis(), TimeUnit.MILLISECONDS);
         List<Long> got = new ArrayList<>(taken.get(SOON.toMillis(), TimeUnit.MILLISECONDS));
@@ -158,7 +162,16 @@ class ClientFailoverTest {
         assertEquals(got.size(), unique.size(), "nothing taken twice");
         assertTrue(unique.containsAll(acknowledged), "no acknowledged write lost: missing "
                 + acknowledged.stream().filter(value -> !unique.contains(value)).toList());
-        assertTrue(acknowledged.size() > 100, "the producer went on after the failure: " + acknowledged.size());
+    }
+
+    private static void awaitAcks(java.util.concurrent.atomic.AtomicLong acks, long atLeast, String when)
+            throws InterruptedException {
+        long giveUp = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (acks.get() < atLeast) {
+            assertTrue(System.nanoTime() - giveUp < 0, "the producer had " + acks.get() + " acknowledged writes "
+                    + when + ", not " + atLeast + ", after 60 s");
+            Thread.sleep(20);
+        }
     }
 
     private static List<Long> values(List<Entry> entries) {
