@@ -54,13 +54,20 @@ class ClusterServedCapiTest extends CapiContractSuite {
     }
 
     /** Servers in front of each member's handle, a client of each, calls in turn. */
-    static final class Served implements Capi {
-        private final List<ClusterSpace> handles = new ArrayList<>();
-        private final List<SpaceServer> servers = new ArrayList<>();
-        private final List<RemoteSpace> clients = new ArrayList<>();
-        private final RotatingCapi rotating;
+    static final class Served extends robotworld.testsupport.ForwardingCapi {
+        private final List<ClusterSpace> handles;
+        private final List<SpaceServer> servers;
 
-        private Served(LocalCluster cluster, String space, int notificationQueue) {
+        private Served(List<ClusterSpace> handles, List<SpaceServer> servers, List<RemoteSpace> clients) {
+            super(new RotatingCapi(new ArrayList<>(clients)));
+            this.handles = handles;
+            this.servers = servers;
+        }
+
+        private static Served start(LocalCluster cluster, String space, int notificationQueue) {
+            List<ClusterSpace> handles = new ArrayList<>();
+            List<SpaceServer> servers = new ArrayList<>();
+            List<RemoteSpace> clients = new ArrayList<>();
             for (ClusterMember member : cluster.members) {
                 ClusterSpace handle = member.openSpace(space, notificationQueue);
                 handles.add(handle);
@@ -71,77 +78,16 @@ class ClusterServedCapiTest extends CapiContractSuite {
                 clients.add(RemoteSpace.open(server.uri(), RemoteSpace.Options.defaults()
                         .notificationQueue(notificationQueue).networkAllowanceMillis(20_000)));
             }
-            rotating = new RotatingCapi(new ArrayList<>(clients));
+            return new Served(handles, servers, clients);
         }
 
         static Served open(LocalCluster cluster, String space, int notificationQueue) {
-            return new Served(cluster, space, notificationQueue);
-        }
-
-        @Override
-        public URI spaceUri() {
-            return rotating.spaceUri();
-        }
-
-        @Override
-        public ContainerRef createContainer(ContainerSpec spec) {
-            return rotating.createContainer(spec);
-        }
-
-        @Override
-        public ContainerRef lookupContainer(String name) {
-            return rotating.lookupContainer(name);
-        }
-
-        @Override
-        public ContainerRef lookupOrCreateContainer(ContainerSpec spec) {
-            return rotating.lookupOrCreateContainer(spec);
-        }
-
-        @Override
-        public void destroyContainer(ContainerRef container) {
-            rotating.destroyContainer(container);
-        }
-
-        @Override
-        public ContainerInfo describeContainer(ContainerRef container) {
-            return rotating.describeContainer(container);
-        }
-
-        @Override
-        public List<Entry> read(ContainerRef container, Timeout timeout, Selector... selectors) {
-            return rotating.read(container, timeout, selectors);
-        }
-
-        @Override
-        public List<Entry> take(ContainerRef container, Timeout timeout, Selector... selectors) {
-            return rotating.take(container, timeout, selectors);
-        }
-
-        @Override
-        public int destroy(ContainerRef container, Timeout timeout, Selector... selectors) {
-            return rotating.destroy(container, timeout, selectors);
-        }
-
-        @Override
-        public void write(ContainerRef container, Timeout timeout, List<Item> items) {
-            rotating.write(container, timeout, items);
-        }
-
-        @Override
-        public List<Entry> shift(ContainerRef container, Timeout timeout, List<Item> items) {
-            return rotating.shift(container, timeout, items);
-        }
-
-        @Override
-        public Subscription subscribe(ContainerRef container, Set<Operation> operations, NotificationMode mode,
-                                      Timeout timeout, NotificationListener listener) {
-            return rotating.subscribe(container, operations, mode, timeout, listener);
+            return start(cluster, space, notificationQueue);
         }
 
         @Override
         public void close() {
-            rotating.close();
+            super.close();
             servers.forEach(SpaceServer::stop);
             handles.forEach(ClusterSpace::close);
         }

@@ -22,12 +22,13 @@ import robotworld.space.server.SpaceServer;
  * A fresh server on a free loopback port with a remote client in front of it, as one {@link Capi}: every call
  * goes through the client; closing closes the client, then stops the server.
  */
-final class ServedSpace implements Capi {
+final class ServedSpace extends robotworld.testsupport.ForwardingCapi {
 
     final SpaceServer server;
     final RemoteSpace client;
 
     private ServedSpace(SpaceServer server, RemoteSpace client) {
+        super(client);
         this.server = server;
         this.client = client;
     }
@@ -84,69 +85,8 @@ final class ServedSpace implements Capi {
     }
 
     @Override
-    public URI spaceUri() {
-        return client.spaceUri();
-    }
-
-    @Override
-    public ContainerRef createContainer(ContainerSpec spec) {
-        return client.createContainer(spec);
-    }
-
-    @Override
-    public ContainerRef lookupContainer(String name) {
-        return client.lookupContainer(name);
-    }
-
-    @Override
-    public ContainerRef lookupOrCreateContainer(ContainerSpec spec) {
-        return client.lookupOrCreateContainer(spec);
-    }
-
-    @Override
-    public void destroyContainer(ContainerRef container) {
-        client.destroyContainer(container);
-    }
-
-    @Override
-    public ContainerInfo describeContainer(ContainerRef container) {
-        return client.describeContainer(container);
-    }
-
-    @Override
-    public List<Entry> read(ContainerRef container, Timeout timeout, Selector... selectors) {
-        return client.read(container, timeout, selectors);
-    }
-
-    @Override
-    public List<Entry> take(ContainerRef container, Timeout timeout, Selector... selectors) {
-        return client.take(container, timeout, selectors);
-    }
-
-    @Override
-    public int destroy(ContainerRef container, Timeout timeout, Selector... selectors) {
-        return client.destroy(container, timeout, selectors);
-    }
-
-    @Override
-    public void write(ContainerRef container, Timeout timeout, List<Item> items) {
-        client.write(container, timeout, items);
-    }
-
-    @Override
-    public List<Entry> shift(ContainerRef container, Timeout timeout, List<Item> items) {
-        return client.shift(container, timeout, items);
-    }
-
-    @Override
-    public Subscription subscribe(ContainerRef container, Set<Operation> operations, NotificationMode mode,
-                                  Timeout timeout, NotificationListener listener) {
-        return client.subscribe(container, operations, mode, timeout, listener);
-    }
-
-    @Override
     public void close() {
-        client.close();
+        super.close();
         server.stop();
     }
 }
