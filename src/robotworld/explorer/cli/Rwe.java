@@ -86,8 +86,16 @@ public final class Rwe implements Callable<Integer> {
     private static int usageError(ParameterException exception, String[] args) {
         CommandLine line = exception.getCommandLine();
         PrintWriter err = line.getErr();
-        err.println("rwe " + verb(line) + ": " + inWords(exception.getMessage()));
-        err.println("see 'rwe " + (verb(line) + " --help").strip() + "'");
+        String verb = verb(line);
+        String message = inWords(exception.getMessage());
+        if (verb.isEmpty() && exception instanceof picocli.CommandLine.UnmatchedArgumentException unmatched
+                && !unmatched.getUnmatched().isEmpty() && !unmatched.getUnmatched().get(0).startsWith("-")) {
+            // the first word was meant as a verb
+            message = "unknown verb '" + unmatched.getUnmatched().get(0) + "'; the verbs are "
+                    + String.join(", ", line.getSubcommands().keySet());
+        }
+        err.println((verb.isEmpty() ? "rwe" : "rwe " + verb) + ": " + message);
+        err.println("see 'rwe " + (verb + " --help").strip() + "'");
         err.flush();
         return 2;
     }

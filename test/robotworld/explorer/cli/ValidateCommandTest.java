@@ -62,6 +62,16 @@ class ValidateCommandTest {
     }
 
     @Test
+    void anUnknownVerbIsNamedWithTheVerbsThereAre() {
+        assertEquals(2, rwe("bogus"));
+        String[] lines = err.toString().replace("\r", "").split("\n");
+        assertEquals(2, lines.length, err.toString());
+        assertTrue(lines[0].startsWith("rwe: unknown verb 'bogus'; the verbs are "), lines[0]);
+        assertTrue(lines[0].contains("validate") && lines[0].contains("explore"), lines[0]);
+        assertEquals("see 'rwe --help'", lines[1]);
+    }
+
+    @Test
     void helpListsTheVerbs() {
         assertEquals(0, rwe("--help"));
         assertTrue(out.toString().contains("validate"), out.toString());
