@@ -497,6 +497,13 @@ public final class FoxgloveBridge implements AutoCloseable {
                         sendText(status(2, "subscription id " + id + " is invalid or in use"));
                         continue;
                     }
+                    Integer existing = subscriptions.get(channel);
+                    if (existing != null) {
+                        // the protocol allows one subscription per channel and client: keep the first
+                        sendText(status(2, "channel " + channel + " is already subscribed as subscription " + existing
+                                + "; subscription " + id + " ignored (unsubscribe " + existing + " first)"));
+                        continue;
+                    }
                     subscriptions.put(channel, id);
                     if (last != null) {
                         send(id, last);
@@ -506,9 +513,16 @@ public final class FoxgloveBridge implements AutoCloseable {
         }
 
         private void unsubscribe(JsonNode ids) {
+            if (!ids.isArray()) {
+                sendText(status(2, "unsubscribe needs \"subscriptionIds\": [id, ...]"));
+                return;
+            }
             synchronized (this) {
                 for (JsonNode id : ids) {
-                    subscriptions.values().removeIf(value -> value == id.asInt(-1));
+                    int wanted = id.asInt(-1);
+                    if (!subscriptions.values().removeIf(value -> value == wanted)) {
+                        sendText(status(1, "no subscription " + shorten(id.asText()) + " to end"));
+                    }
                 }
             }
         }

@@ -371,7 +371,7 @@ final class RtuMaster {
                     return corrupt(address, have, "CRC error");
                 }
                 RtuFrame frame = RtuFrame.decode(buffer, frameLength);
-                pacing.frameReceived(frameLength, reads, lineQuietSince - firstByteAt);
+                pacing.frameReceived(frame.address(), frameLength, reads, lineQuietSince - firstByteAt);
                 have -= frameLength;
                 System.arraycopy(buffer, frameLength, buffer, 0, have);
                 firstByteAt = lineQuietSince;

@@ -26,6 +26,9 @@ import robotworld.observe.ReplayMark;
 import robotworld.observe.WorldLayout;
 import robotworld.observe.WorldTap;
 import robotworld.space.EmbeddedSpace;
+import robotworld.telemetry.TelemetryMessage;
+import robotworld.telemetry.Topic;
+import robotworld.telemetry.Topics;
 
 /** Who may connect, what a wrong request gets, and how a replay is told, with the JDK's WebSocket client. */
 class FoxgloveBridgeRulesTest {
@@ -51,10 +54,34 @@ class FoxgloveBridgeRulesTest {
             return null;
         }
 
+        /** Message Data frames as "subscription id: JSON". */
+        final LinkedBlockingQueue<String> messages = new LinkedBlockingQueue<>();
+        private final java.io.ByteArrayOutputStream binary = new java.io.ByteArrayOutputStream();
+
         @Override
         public CompletionStage<?> onBinary(WebSocket socket, ByteBuffer data, boolean last) {
+            byte[] piece = new byte[data.remaining()];
+            data.get(piece);
+            binary.writeBytes(piece);
+            if (last) {
+                ByteBuffer frame = ByteBuffer.wrap(binary.toByteArray()).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+                binary.reset();
+                if (frame.get() == 1) { // Message Data: opcode, subscription id, timestamp, payload
+                    int subscription = frame.getInt();
+                    frame.getLong();
+                    messages.add(subscription + ": " + java.nio.charset.StandardCharsets.UTF_8.decode(frame));
+                }
+            }
             socket.request(1);
             return null;
+        }
+
+        String nextMessage() throws Exception {
+            String message = messages.poll(30, TimeUnit.SECONDS);
+            if (message == null) {
+                throw new AssertionError("no Message Data within 30 s");
+            }
+            return message;
         }
 
         JsonNode next() throws Exception {
@@ -141,6 +168,69 @@ class FoxgloveBridgeRulesTest {
             assertEquals(1, bridge.subscriptionCount(), "still serving after the bad messages");
             socket.abort();
         }
+    }
+
+    @Test
+    void aChannelHasOneSubscriptionPerClientAndUnsubscribeEndsIt() throws Exception {
+        Topic motor = Topics.module(new ModuleRef("Bot", "Motor", "MotorModule"));
+        try (FoxgloveBridge bridge = FoxgloveBridge.start(LAYOUT, FoxgloveBridge.Options.defaults().port(0))) {
+            Texts texts = new Texts();
+            WebSocket socket = connect(bridge.uri(), texts, FoxgloveBridge.SUBPROTOCOL).get(30, TimeUnit.SECONDS);
+            texts.next(); // serverInfo
+            int channel = channelOf(texts.next(), "/Bot/Motor");
+            send(socket, "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":7,\"channelId\":" + channel + "}]}");
+            awaitSubscriptions(bridge, 1);
+            bridge.publish(new TelemetryMessage(motor, 1, "{\"n\":1}".getBytes()));
+            assertEquals("7: {\"n\":1}", texts.nextMessage());
+
+            // a second subscription to the same channel is refused, and the first one stays
+            send(socket, "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":8,\"channelId\":" + channel + "}]}");
+            JsonNode refused = texts.next();
+            assertEquals(2, refused.get("level").asInt(), refused.toString());
+            assertTrue(refused.get("message").asText().contains("already subscribed as subscription 7"),
+                    refused.toString());
+            assertEquals(1, bridge.subscriptionCount());
+            bridge.publish(new TelemetryMessage(motor, 2, "{\"n\":2}".getBytes()));
+            assertEquals("7: {\"n\":2}", texts.nextMessage(), "once, under the first subscription's id");
+
+            // after unsubscribing, nothing more comes for that id
+            send(socket, "{\"op\":\"unsubscribe\",\"subscriptionIds\":[7]}");
+            awaitSubscriptions(bridge, 0);
+            bridge.publish(new TelemetryMessage(motor, 3, "{\"n\":3}".getBytes()));
+            // frames go out in order: when the answer to a later request has come, so would have the message
+            send(socket, "{\"op\":\"unsubscribe\",\"subscriptionIds\":[7]}");
+            JsonNode unknown = texts.next();
+            assertEquals(1, unknown.get("level").asInt(), unknown.toString());
+            assertTrue(unknown.get("message").asText().contains("no subscription 7"), unknown.toString());
+            assertTrue(texts.messages.isEmpty(), "no message after unsubscribing: " + texts.messages);
+
+            // the id may be used again: the new subscription starts with the channel's latest message
+            send(socket, "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":7,\"channelId\":" + channel + "}]}");
+            assertEquals("7: {\"n\":3}", texts.nextMessage());
+            socket.abort();
+        }
+    }
+
+    private static int channelOf(JsonNode advertise, String topic) {
+        assertEquals("advertise", advertise.get("op").asText());
+        for (JsonNode channel : advertise.get("channels")) {
+            if (channel.get("topic").asText().equals(topic)) {
+                return channel.get("id").asInt();
+            }
+        }
+        throw new AssertionError(topic + " not advertised: " + advertise);
+    }
+
+    private static void send(WebSocket socket, String text) throws Exception {
+        socket.sendText(text, true).get(30, TimeUnit.SECONDS);
+    }
+
+    private static void awaitSubscriptions(FoxgloveBridge bridge, int count) throws InterruptedException {
+        long deadline = System.nanoTime() + 30_000_000_000L;
+        while (bridge.subscriptionCount() != count && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        assertEquals(count, bridge.subscriptionCount());
     }
 
     @Test

@@ -321,8 +321,11 @@ public final class RobotExplorer {
                         order.stream().map(details::get).toList(), order.stream().map(docRefs::get).toList()));
             }
             OptionalLong paced = bus.replyPacing().slowerLineBaud(bus.settings().bitsPerCharacter());
-            long garbled = problems.stream().filter(p -> p.kind() == AddressProblem.Kind.CRC_ERROR).count();
-            boolean mismatch = paced.isPresent() || garbled >= 2
+            // a mismatch garbles (or slows) the replies of most modules; a few troubled modules among clean ones
+            // are troubled modules
+            long garbled = problems.stream().filter(p -> p.kind() == AddressProblem.Kind.CRC_ERROR)
+                    .mapToInt(AddressProblem::address).distinct().count();
+            boolean mismatch = paced.isPresent() || (garbled >= 2 && garbled > modules.size())
                     || (modules.isEmpty() && bus.statistics().crcErrors() >= 3);
             if (paced.isPresent()) {
                 notes.add("replies arrive at about " + paced.getAsLong() + " baud, not " + bus.settings().baudRate()

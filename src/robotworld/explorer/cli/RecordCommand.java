@@ -111,6 +111,35 @@ final class RecordCommand implements Callable<Integer> {
             err.println("rwe record: cannot write " + out + ": " + e.getMessage());
             return 1;
         }
+        // Ctrl-C: the hook stops the recording and holds the JVM until the file is finished and the summary printed
+        CountDownLatch stop = new CountDownLatch(1);
+        CountDownLatch finished = new CountDownLatch(1);
+        Thread hook = new Thread(() -> {
+            stop.countDown();
+            try {
+                finished.await(20, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "rwe-record-shutdown");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            return record(recorder, layout, url, stop, stdout, err);
+        } finally {
+            stdout.flush();
+            err.flush();
+            finished.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException e) {
+                // shutting down already
+            }
+        }
+    }
+
+    /** Records until {@code stop}, the duration or a failure, and prints the summary. Returns the exit code. */
+    private int record(Recorder recorder, WorldLayout layout, String url, CountDownLatch stop, PrintWriter stdout,
+            PrintWriter err) throws IOException {
         try (Capi connection = MonitorSpace.open(url)) {
             WorldTap tap = new WorldTap(connection, layout);
             tap.add(recorder.observer());
@@ -129,18 +158,6 @@ final class RecordCommand implements Callable<Integer> {
             err.println("recording " + layout.modules().size() + " modules of " + layout.world() + " from " + url
                     + " into " + out + (duration == null ? "; Ctrl-C to stop" : " for " + duration + " s"));
             err.flush();
-            // Ctrl-C: the hook stops the loop below and holds the JVM until the file is finished
-            CountDownLatch stop = new CountDownLatch(1);
-            CountDownLatch finished = new CountDownLatch(1);
-            Thread hook = new Thread(() -> {
-                stop.countDown();
-                try {
-                    finished.await(20, TimeUnit.SECONDS);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            }, "rwe-record-shutdown");
-            Runtime.getRuntime().addShutdownHook(hook);
             try {
                 String why = awaitEnd(recorder, err, stop);
                 tap.close();
@@ -148,12 +165,6 @@ final class RecordCommand implements Callable<Integer> {
             } finally {
                 tap.close();
                 safety.close();
-                finished.countDown();
-                try {
-                    Runtime.getRuntime().removeShutdownHook(hook);
-                } catch (IllegalStateException e) {
-                    // shutting down already
-                }
             }
         } catch (SpaceException e) {
             boolean empty = recorder.status().messages() == 0;

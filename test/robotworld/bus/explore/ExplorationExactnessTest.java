@@ -1,6 +1,7 @@
 package robotworld.bus.explore;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
@@ -58,6 +59,23 @@ class ExplorationExactnessTest {
                     // found, or (on a machine so busy that even the patient retries missed) reported, never lost
                     assertEquals(Set.of(1, 2, 3, 4), foundOrReported(result), "run " + run + ": " + result.problems());
                 }
+            }
+        }
+    }
+
+    @Test
+    void twoSlowModulesAmongCleanOnesAreNoBaudRateMismatch() throws Exception {
+        try (SimulatedRobot robot = SimulatedRobot.create(example().withTiming(LineTiming.FAST))) {
+            robot.faults(1).replyDelay(Duration.ofMillis(12)).trickle(Duration.ofMillis(1));
+            robot.faults(4).trickle(Duration.ofMillis(2));
+            try (RS485Bus bus = new RS485Bus(robot.serve("tcp://127.0.0.1:0"), SerialSettings.eightNoneOne(115_200),
+                    PATIENT)) {
+                ExplorationResult result = explorer(bus).explore("Trickling", new ExplorationListener() { });
+                assertEquals(Set.of(1, 2, 3, 4), foundOrReported(result), result.problems().toString());
+                // the trickling modules are slow (a byte per 1-2 ms), the bumper and servo answer at the line's pace
+                assertFalse(result.baudMismatch(), result.notes().toString());
+                assertTrue(result.suggestedBaud().isEmpty());
+                assertTrue(result.notes().stream().noneMatch(n -> n.contains("baud")), result.notes().toString());
             }
         }
     }

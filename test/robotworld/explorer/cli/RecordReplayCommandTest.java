@@ -7,6 +7,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
@@ -80,6 +81,105 @@ class RecordReplayCommandTest {
         assertTrue(replay.contains("# REPLAY of run.mcap"), replay);
         assertTrue(replay.matches("(?s).*CaterpillarRobot\\s+Motor-Controller\\s+setMotor\\s+.*500.*"), replay);
         assertTrue(replay.contains("replay space at http://127.0.0.1:"), replay);
+    }
+
+    @Test
+    void ctrlCFinishesTheFileAndPrintsTheSummary() throws Exception {
+        Path world = ProjectFiles.resolve("docs/examples/chapter5-world.xml");
+        Path file = folder.resolve("interrupted.mcap");
+        Path stdout = folder.resolve("record.out");
+        Path stderr = folder.resolve("record.err");
+        try (EmbeddedSpace data = EmbeddedSpace.open();
+             SpaceServer server = SpaceServer.start(data, SpaceServer.Options.defaults().port(0)
+                     .stopGraceMillis(200))) {
+            // the real command in a JVM of its own (the built jar, as ./rwe starts it), as a person runs it
+            Path jar = Path.of(System.getProperty("rwe.build.dir", "build"), "dist", "robotworldexplorer.jar");
+            List<String> command = new ArrayList<>();
+            if (ignoresSigint()) {
+                // started in the background of a non-interactive shell: our children would ignore Ctrl-C too
+                command.addAll(List.of("env", "--default-signal=INT"));
+            }
+            command.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                    "-Drwe.home=" + ProjectFiles.root(), "-jar", jar.toAbsolutePath().toString(), "record",
+                    world.toString(), "--out", file.toString(), "--space", server.uri().toString()));
+            Process process = new ProcessBuilder(command).directory(ProjectFiles.root().toFile())
+                    .redirectOutput(stdout.toFile()).redirectError(stderr.toFile()).start();
+            try {
+                long deadline = System.nanoTime() + 60_000_000_000L;
+                while (!read(stderr).contains("recording 3 modules")) {
+                    assertTrue(System.nanoTime() < deadline && process.isAlive(), "not recording: " + read(stdout)
+                            + read(stderr));
+                    Thread.sleep(20);
+                }
+                long before = progressCount(stderr, deadline, process);
+                ContainerRef answers = data.lookupOrCreateContainer(ContainerSpec.of(Order.LIFO).withKeyView()
+                        .unbounded().named("CaterpillarRobotMotor-ControllerANSWER"));
+                data.shift(answers, Timeout.TRY_ONCE, List.of(Item.keyed("robot-laptop",
+                        CallTuple.of("robot-laptop", "setMotor", 1, 500).toTuple())));
+                Thread.sleep(200);
+                data.shift(answers, Timeout.TRY_ONCE, List.of(Item.keyed("robot-laptop",
+                        CallTuple.of("robot-laptop", "setMotor", 1, 0).toTuple())));
+                // the progress line (once a second) counts both calls: they are in the recorder
+                while (progressCount(stderr, deadline, process) < before + 2) {
+                    assertTrue(System.nanoTime() < deadline && process.isAlive(), "the calls were not recorded: "
+                            + read(stderr));
+                    Thread.sleep(50);
+                }
+                Process kill = new ProcessBuilder("kill", "-INT", String.valueOf(process.pid())).inheritIO().start();
+                assertEquals(0, kill.waitFor(), "kill -INT");
+                assertTrue(process.waitFor(60, TimeUnit.SECONDS), "rwe record did not stop on Ctrl-C: " + read(stderr));
+            } finally {
+                process.destroyForcibly();
+            }
+            assertEquals(130, process.exitValue(), "ended by SIGINT, as after Ctrl-C: " + read(stderr));
+        }
+        String summary = read(stdout);
+        assertTrue(summary.matches("(?s)recorded \\d+ messages, .* into " + java.util.regex.Pattern.quote(
+                file.toString()) + "; nothing dropped\\R"), "the summary line: '" + summary + "'\n" + read(stderr));
+
+        out.getBuffer().setLength(0);
+        assertEquals(0, rwe("record", "--info", file.toString()), err.toString());
+        String info = out.toString();
+        assertTrue(info.contains(": finished MCAP file"), info);
+        assertTrue(info.contains("ended: Ctrl-C"), info);
+        assertTrue(info.matches("(?s).*/CaterpillarRobot/Motor-Controller\\s+rwe.ModuleTraffic\\s+json\\s+2\\n.*"),
+                info);
+        assertTrue(info.contains("indexed      yes"), info);
+    }
+
+    /** The message count of the last progress line, once there is one. */
+    private static long progressCount(Path stderr, long deadline, Process process) throws Exception {
+        java.util.regex.Pattern count = java.util.regex.Pattern.compile("s  (\\d+) messages  ");
+        while (true) {
+            java.util.regex.Matcher matcher = count.matcher(read(stderr));
+            long last = -1;
+            while (matcher.find()) {
+                last = Long.parseLong(matcher.group(1));
+            }
+            if (last >= 0) {
+                return last;
+            }
+            assertTrue(System.nanoTime() < deadline && process.isAlive(), "no progress line: " + read(stderr));
+            Thread.sleep(50);
+        }
+    }
+
+    /** Whether this JVM was started with SIGINT ignored (Linux), which its children would inherit. */
+    private static boolean ignoresSigint() throws java.io.IOException {
+        Path status = Path.of("/proc/self/status");
+        if (!Files.exists(status)) {
+            return false;
+        }
+        for (String line : Files.readAllLines(status)) {
+            if (line.startsWith("SigIgn:")) {
+                return (Long.parseUnsignedLong(line.substring(7).trim(), 16) & 0x2) != 0; // bit of signal 2
+            }
+        }
+        return false;
+    }
+
+    private static String read(Path file) throws java.io.IOException {
+        return Files.exists(file) ? Files.readString(file) : "";
     }
 
     @Test
