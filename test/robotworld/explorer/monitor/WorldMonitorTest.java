@@ -231,6 +231,37 @@ class WorldMonitorTest {
     }
 
     @Test
+    void aNewCallClearsTheProblemOfTheFailedOneBeforeItIsAnswered() throws Exception {
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        BumperModulePanel panel = panel(BumperModulePanel.class);
+        bumperHardware.failing.set(true);
+        try {
+            bumper.getAllBumper();
+        } catch (RuntimeException expected) {
+            // the caller gets the failure; the monitor sees the error answer
+        }
+        eventually("the problem is shown", () -> panel.problemText().contains("bumper module does not answer"));
+        String reported = onEdt(() -> panel.freshness().getText());
+
+        // the next call is under way (the hardware holds it): what the panel says must not be the old failure
+        bumperHardware.failing.set(false);
+        java.util.concurrent.CountDownLatch gate = new java.util.concurrent.CountDownLatch(1);
+        bumperHardware.gate.set(gate);
+        Thread caller = new Thread(bumper::getAllBumper, "next call");
+        caller.start();
+        try {
+            eventually("the problem is cleared while the call waits", () -> panel.problemText().isEmpty());
+            assertTrue(caller.isAlive(), "the call is still under way");
+        } finally {
+            bumperHardware.gate.set(null);
+            gate.countDown();
+            caller.join(20_000);
+        }
+        eventually("its answer is shown", () -> !panel.freshness().getText().equals(reported)
+                && panel.problemText().isEmpty());
+    }
+
+    @Test
     void aLongErrorWrapsInsideItsPanelAndEveryFieldStaysVisible() {
         MonitorWindow window = monitor.window();
         ParticipantPanel robotTab = window.participants().get(1);
