@@ -240,6 +240,7 @@ public final class AssembleFrame extends JFrame {
             devices.getCellEditor().stopCellEditing();
         }
         errors.setText("");
+        saved = null; // "Generate a framework..." opens only what this Save writes
         generateNext.setEnabled(false);
         String name = worldName.getText().strip();
         String problem = WorldAssembly.problemWithName(name);

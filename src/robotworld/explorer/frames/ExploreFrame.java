@@ -110,6 +110,7 @@ public final class ExploreFrame extends JFrame {
             return;
         }
         explore.setEnabled(false);
+        log.setText(""); // a new exploration: the last one's lines would be taken for this one's
         progress.setValue(0);
         progress.setString("starting");
         status.info("Exploring " + portName + "...");

@@ -156,6 +156,11 @@ public final class GenerateFrame extends JFrame {
         return result.getText();
     }
 
+    /** The progress bar's text: the step being done, "done" or "failed" (empty before the first generation). */
+    public String progressText() {
+        return progress.getString();
+    }
+
     /** The status line. */
     public String statusText() {
         return status.getText();
@@ -164,6 +169,9 @@ public final class GenerateFrame extends JFrame {
     /** Loads the world named in the world file field (as the Load button does). */
     public void loadWorld() {
         errors.setText("");
+        result.setText(""); // the last generation was of the world loaded before
+        progress.setValue(0);
+        progress.setString("");
         Path file = worldFile.path();
         if (file == null) {
             status.error("Type or choose a world file first.");
@@ -235,6 +243,7 @@ public final class GenerateFrame extends JFrame {
         generate.setEnabled(false);
         result.setText("");
         progress.setValue(0);
+        progress.setString("starting");
         status.info("Generating...");
         generatedViewpoint = viewpointGroup.getSelection().getActionCommand();
         new GenerateWorker(this, world, generatedViewpoint,

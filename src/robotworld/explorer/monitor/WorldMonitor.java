@@ -103,7 +103,8 @@ public final class WorldMonitor implements AutoCloseable {
                 tabs.add(new ParticipantPanel(participant.name(), participant.kind(), panels));
             }
         }
-        window = layout == Windows.ONE ? new MonitorWindow(world.name(), tabs, view, new PlotsPanel(plots),
+        window = layout == Windows.ONE ? new MonitorWindow(world.name(), tabs, view, new PlotsPanel(plots,
+                world.layout().robots().collect(java.util.stream.Collectors.toSet())),
                 new StatusStrip(statistics), memory) : null;
         if (window != null) {
             window.showAtTop(stopButton(world, space));

@@ -71,6 +71,15 @@ class GenerateFrameTest {
         assertTrue(Files.isRegularFile(destination.resolve("src/chapter5/DimRoom.java")));
         assertTrue(onEdt(frame::statusText).contains("main class chapter5."), onEdt(frame::statusText));
         screenshot(frame, "generate-frame-done");
+
+        // another world loaded: the project generated from the one before is no longer this window's result
+        onEdt(() -> {
+            frame.worldFileField().setText(ProjectFiles.resolve("docs/examples/lab-world.xml").toString());
+            frame.loadButton().doClick();
+        });
+        assertEquals("", onEdt(frame::resultText), "the last generation's result is cleared");
+        assertEquals("", onEdt(frame::progressText));
+        assertTrue(onEdt(frame::statusText).startsWith("Loaded "), onEdt(frame::statusText));
     }
 
     @Test
@@ -103,5 +112,17 @@ class GenerateFrameTest {
                 && !frame.statusText().startsWith("Generating"));
         assertEquals("", onEdt(frame::resultText));
         assertTrue(Files.exists(occupied.resolve("notes.txt")));
+        assertEquals("failed", onEdt(frame::progressText));
+
+        // the next generation starts clean: neither "failed" nor the error stays while it runs
+        Path free = temp.resolve("free");
+        List<String> atStart = onEdt(() -> {
+            frame.destinationField().setText(free.toString());
+            frame.generateButton().doClick();
+            return List.of(frame.progressText(), frame.statusText(), frame.resultText());
+        });
+        assertEquals(List.of("starting", "Generating...", ""), atStart);
+        eventually("the project is generated", Duration.ofSeconds(20), () -> !frame.resultText().isEmpty());
+        assertEquals("done", onEdt(frame::progressText));
     }
 }

@@ -1,6 +1,7 @@
 package robotworld.explorer.gui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robotworld.explorer.gui.GuiTesting.eventually;
 import static robotworld.explorer.gui.GuiTesting.onEdt;
@@ -124,6 +125,19 @@ class LauncherAndExploreTest {
         eventually("the error is shown", Duration.ofSeconds(15), () -> frame.exploreButton().isEnabled());
         assertTrue(onEdt(frame::logText).contains("error: "), onEdt(frame::logText));
         assertEquals("failed", onEdt(() -> frame.progress().getString()));
+        String first = onEdt(frame::logText);
+
+        // a new exploration starts with an empty log: the last one's error is not taken for this one's
+        String atStart = onEdt(() -> {
+            frame.portField().getEditor().setItem("tcp://127.0.0.1:2");
+            frame.exploreButton().doClick();
+            return frame.logText();
+        });
+        assertEquals("", atStart);
+        eventually("the second error is shown", Duration.ofSeconds(15), () -> frame.exploreButton().isEnabled());
+        String second = onEdt(frame::logText);
+        assertEquals(1, second.split("error: ", -1).length - 1, second);
+        assertFalse(second.contains(first.strip()), second);
     }
 
     private <F extends JFrame> F show(java.util.concurrent.Callable<F> create) {

@@ -74,8 +74,20 @@ final class FakeHardware {
         final java.util.concurrent.atomic.AtomicReference<String> message =
                 new java.util.concurrent.atomic.AtomicReference<>("bumper module does not answer");
 
+        /** While set, calls wait for it to open (at most 20 s): a call under way. */
+        final java.util.concurrent.atomic.AtomicReference<java.util.concurrent.CountDownLatch> gate =
+                new java.util.concurrent.atomic.AtomicReference<>();
+
         @Override
         public int getAllBumper() {
+            java.util.concurrent.CountDownLatch closed = gate.get();
+            if (closed != null) {
+                try {
+                    closed.await(20, java.util.concurrent.TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
             if (failing.get()) {
                 throw new IllegalStateException(message.get());
             }

@@ -25,7 +25,8 @@ import robotworld.xvsm.XVSMServoModuleRemote;
 /**
  * {@code ./antw bench-monitor-soak}: the monitor window open for {@code bench.monitor.minutes} (10) minutes while
  * the robot's IR, bumper, motor and servo modules each report 50 times a second through a loopback space server
- * (IR: 7 distances, bumper: 8 contacts, motors 1 and 2, servo 1: 17 channels at 50 Hz). Every 30 s, after a
+ * (IR: 7 distances, bumper: 8 contacts, motors 1 and 2, servo 1: 18 channels at 50 Hz, plus each module's call
+ * latency: 22 series). Every 30 s, after a
  * garbage collection, it prints the points the plots hold, the heap in use and the answers seen. The verdict: the
  * points held never exceed the fixed bound (series × ring size) and the heap at the end is within 10 % (or 8 MB)
  * of the heap after the first full minute.
@@ -68,7 +69,7 @@ public final class MonitorSoak {
                 series += p.modules().size() * (PlotModel.MAX_CHANNEL + 2);
             }
             long bound = (long) series * PlotModel.CAPACITY;
-            System.out.printf(Locale.ROOT, "Monitor soak: %d min, 4 modules x 50 reports/s (17 channels), window open;"
+            System.out.printf(Locale.ROOT, "Monitor soak: %d min, 4 modules x 50 reports/s (18 channels), window open;"
                     + " bound on points held: %d%n", MINUTES, bound);
             System.out.printf(Locale.ROOT, "  %6s %12s %14s %12s %10s%n", "time", "answers", "points held",
                     "heap MB", "gaps");

@@ -231,6 +231,131 @@ class WorldMonitorTest {
     }
 
     @Test
+    void aNewCallClearsTheProblemOfTheFailedOneBeforeItIsAnswered() throws Exception {
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        BumperModulePanel panel = panel(BumperModulePanel.class);
+        bumperHardware.failing.set(true);
+        try {
+            bumper.getAllBumper();
+        } catch (RuntimeException expected) {
+            // the caller gets the failure; the monitor sees the error answer
+        }
+        eventually("the problem is shown", () -> panel.problemText().contains("bumper module does not answer"));
+        String reported = onEdt(() -> panel.freshness().getText());
+
+        // the next call is under way (the hardware holds it): what the panel says must not be the old failure
+        bumperHardware.failing.set(false);
+        java.util.concurrent.CountDownLatch gate = new java.util.concurrent.CountDownLatch(1);
+        bumperHardware.gate.set(gate);
+        Thread caller = new Thread(bumper::getAllBumper, "next call");
+        caller.start();
+        try {
+            eventually("the problem is cleared while the call waits", () -> panel.problemText().isEmpty());
+            assertTrue(caller.isAlive(), "the call is still under way");
+        } finally {
+            bumperHardware.gate.set(null);
+            gate.countDown();
+            caller.join(20_000);
+        }
+        eventually("its answer is shown", () -> !panel.freshness().getText().equals(reported)
+                && panel.problemText().isEmpty());
+    }
+
+    @Test
+    void theStatusStripCountsCallsAndErrorsAsTheyHappen() {
+        MonitorWindow window = monitor.window();
+        MotorModule motor = new XVSMMotorModuleRemote(laptop, ROBOT, "Motor-Controller");
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        assertEquals(0L, figure(window, "Bumper-Sensor", 5), "no errors yet");
+        for (int i = 0; i < 10; i++) {
+            motor.setMotor(1, i % 2 == 0 ? 0.25 : 0);
+        }
+        // the strip reads the statistics twice a second: wait for its next refreshes, however slow the machine
+        eventually("calls per second of the motor module", () -> Double.parseDouble(
+                (String) figure(window, "Motor-Controller", 3)) > 0);
+        eventually("its last answer", () -> String.valueOf(figure(window, "Motor-Controller", 6))
+                .startsWith("setMotor 1"));
+        bumperHardware.failing.set(true);
+        for (int expected = 1; expected <= 2; expected++) {
+            try {
+                bumper.getAllBumper();
+            } catch (RuntimeException failed) {
+                // counted by the strip
+            }
+            long errors = expected;
+            eventually(errors + " error(s) counted", () -> Long.valueOf(errors).equals(figure(window,
+                    "Bumper-Sensor", 5)));
+        }
+        assertEquals(0L, figure(window, "Motor-Controller", 5), "the motor module's calls all succeeded");
+        bumperHardware.failing.set(false);
+        // no more calls: the rate falls back to 0 once they are older than its window
+        eventually("the rate falls to 0", Duration.ofSeconds(30), () -> Double.parseDouble(
+                (String) figure(window, "Motor-Controller", 3)) == 0);
+    }
+
+    /** What the status strip's table shows for {@code module} in {@code column}, read on the Swing thread. */
+    private static Object figure(MonitorWindow window, String module, int column) {
+        java.util.concurrent.Callable<Object> read = () -> {
+            javax.swing.JTable table = window.statusStrip().table();
+            for (int row = 0; row < table.getRowCount(); row++) {
+                if (module.equals(table.getValueAt(row, 1))) {
+                    return table.getValueAt(row, column);
+                }
+            }
+            throw new AssertionError("no row for " + module);
+        };
+        try {
+            return javax.swing.SwingUtilities.isEventDispatchThread() ? read.call() : onEdt(read);
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    @Test
+    void aRememberedLayoutIsRestored() throws Exception {
+        Path file = folder.resolve("monitor-layout.properties");
+        MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(MonitorTestWorlds.everyModuleType(folder)));
+        java.awt.Rectangle bounds = new java.awt.Rectangle(40, 30, 1100, 760);
+        WorldMonitor first = onEdt(() -> new WorldMonitor(world, space.connection(), new MonitorLoader(),
+                WorldMonitor.Windows.ONE, LayoutMemory.in(file)));
+        try {
+            onEdt(() -> {
+                MonitorWindow window = first.window();
+                window.setBounds(bounds);
+                first.show();
+                window.validate();
+                window.mainSplit().setDividerLocation(520);
+                window.leftSplit().setDividerLocation(310);
+                window.tabs().setSelectedIndex(0);
+                window.validate();
+            });
+            eventually("the window is shown", () -> first.window().isShowing());
+            assertEquals(List.of(bounds, 520, 310), onEdt(() -> List.of(first.window().getBounds(),
+                    first.window().mainSplit().getDividerLocation(), first.window().leftSplit().getDividerLocation())),
+                    "the layout as set");
+        } finally {
+            onEdt(first::close); // closing remembers
+        }
+        assertTrue(java.nio.file.Files.isRegularFile(file), "the layout was written to " + file);
+
+        WorldMonitor again = onEdt(() -> new WorldMonitor(world, space.connection(), new MonitorLoader(),
+                WorldMonitor.Windows.ONE, LayoutMemory.in(file)));
+        try {
+            onEdt(again::show);
+            MonitorWindow window = again.window();
+            eventually("the window is laid out", () -> window.isShowing() && window.leftSplit().getHeight() > 0);
+            assertEquals(bounds, onEdt(() -> window.getBounds()), "the same place and size");
+            assertEquals(520, (int) onEdt(() -> window.mainSplit().getDividerLocation()), "the same main divider");
+            assertEquals(310, (int) onEdt(() -> window.leftSplit().getDividerLocation()),
+                    "the same divider between world view and plots");
+            assertEquals("DimRoom", onEdt(() -> window.tabs().getTitleAt(window.tabs().getSelectedIndex())),
+                    "the same tab (not the robot's, the first time's choice)");
+        } finally {
+            onEdt(again::close);
+        }
+    }
+
+    @Test
     void aLongErrorWrapsInsideItsPanelAndEveryFieldStaysVisible() {
         MonitorWindow window = monitor.window();
         ParticipantPanel robotTab = window.participants().get(1);

@@ -96,8 +96,7 @@ class WorldViewTest {
         monitor = onEdt(() -> {
             WorldMonitor opened = new WorldMonitor(world, space.connection(), new MonitorLoader(),
                     WorldMonitor.Windows.ONE, LayoutMemory.none());
-            opened.window().setBounds(0, 0, 1280, 860);
-            opened.show();
+            opened.show(); // at its default size: the docs screenshots show what a user sees the first time
             return opened;
         });
         assertTrue(monitor.awaitWatching(Duration.ofSeconds(10)));
@@ -137,7 +136,7 @@ class WorldViewTest {
             command(() -> motor.setMotor(1, 1.0));
             command(() -> motor.setMotor(2, 1.0));
             Thread.sleep(20);
-        } while (!bumper.getSingleBumper(4)); // 1250 mm at 300 mm/s, four times as fast: about a second
+        } while (bumper.getAllBumper() == 0); // 1250 mm at 300 mm/s, four times as fast: about a second
         command(() -> motor.setMotor(1, 0));
         command(() -> motor.setMotor(2, 0));
         // straight ahead is the crate; a robot that turned on the way (the two tracks start one call apart) stops at
@@ -204,17 +203,29 @@ class WorldViewTest {
         ServoModule head = new XVSMServoModuleRemote(laptop, ROBOT, "Head-Servo");
         new XVSMX10ApplianceModuleRemote(laptop, "DimRoom", "Lamp").on();
         new XVSMX10LampModuleRemote(laptop, "DimRoom", "Ceiling").on();
-        // a small IR-avoidance program: forward, turn left when something is close ahead
+        BumperModule bumper = new XVSMBumperModuleRemote(laptop, ROBOT, "Bumper-Sensor");
+        // a small IR-avoidance program: forward, turn left when something is close ahead or a bumper touches
         long until = System.nanoTime() + Duration.ofSeconds(5).toNanos();
         int step = 0;
         while (System.nanoTime() < until) {
             String[] distances = ir.getAllSensors().split(" ");
-            boolean close = Integer.parseInt(distances[0]) < 250 || Integer.parseInt(distances[2]) < 200;
+            boolean close = Integer.parseInt(distances[0]) < 250 || Integer.parseInt(distances[2]) < 200
+                    || bumper.getAllBumper() != 0;
             command(() -> motor.setMotor(1, close ? -0.3 : 0.5));
             command(() -> motor.setMotor(2, close ? 0.6 : 0.5));
             head.setServo(1, 90 + (step++ % 20 - 10) * 4);
             Thread.sleep(40);
         }
+        // while it still drives: the track arrows show
+        onEdt(() -> {
+            window.plots().refresh();
+            window.statusStrip().refresh();
+            window.tabs().setSelectedIndex(1);
+            window.validate();
+            return null;
+        });
+        screenshot(view, "docs-world-view-moving"); // first: the quicker one, both of about the same moment
+        screenshot(window, "docs-monitor-window-moving");
         command(() -> motor.setMotor(1, 0));
         command(() -> motor.setMotor(2, 0));
         Thread.sleep(300); // the robot comes to rest (ramps)
@@ -238,6 +249,7 @@ class WorldViewTest {
         });
         Thread.sleep(600);
         onEdt(() -> {
+            window.plots().reveal(new ModuleRef(ROBOT, "Motor-Controller", "MotorModule")); // the first charts
             window.plots().refresh();
             window.statusStrip().refresh();
             window.tabs().setSelectedIndex(1);
@@ -245,6 +257,17 @@ class WorldViewTest {
             return null;
         });
         screenshot(window, "docs-monitor-window");
+        // at the default size, what a researcher looks at is in view without scrolling or dragging a divider
+        onEdt(() -> {
+            javax.swing.JTable table = window.statusStrip().table();
+            assertEquals(6, table.getRowCount());
+            assertTrue(table.getVisibleRect().height >= table.getRowCount() * table.getRowHeight(),
+                    "every row of the status strip: " + table.getVisibleRect());
+            assertEquals(panel.getHeight(), panel.getVisibleRect().height, "the whole IR panel, all 7 sensors");
+            assertTrue(window.plots().chartsInView() >= 4, window.plots().chartsInView() + " charts in view");
+            assertTrue(view.getHeight() >= 300, "the world view is " + view.getHeight() + " px high");
+            return null;
+        });
         screenshot(view, "docs-world-view");
         screenshot(panel, "docs-panel-IRDistanceModule");
         for (Monitor each : monitor.monitors()) {

@@ -69,7 +69,7 @@ public abstract class ModulePanel extends JPanel {
     }
 
     /**
-     * Shows a failed call until the next good report: wrapped within the panel's width on at most
+     * Shows a failed call until the module is called again or reports well: wrapped within the panel's width on at most
      * {@value ProblemText#ROWS} lines (the whole text in the tooltip), so that however long, it never changes the
      * layout.
      */
@@ -77,7 +77,7 @@ public abstract class ModulePanel extends JPanel {
         problem.show(text);
     }
 
-    /** Clears the problem line (a good report arrived). */
+    /** Clears the problem line (a good report arrived, or a new call is under way). */
     public void clearProblem() {
         problem.show("");
     }

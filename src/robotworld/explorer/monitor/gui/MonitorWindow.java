@@ -8,18 +8,31 @@ import java.awt.Toolkit;
 import java.util.ArrayList;
 import java.util.List;
 import javax.swing.JFrame;
+import javax.swing.JPanel;
 import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.WindowConstants;
 
 /**
- * The one monitor window of a world: the world view (top left), the plots (below it), one tab per participant with
- * its module panels (right), and the status strip (bottom). Its size, maximized state, dividers and tab are
- * remembered between runs ({@link LayoutMemory}); the first time it takes a sensible share of the screen.
+ * The one monitor window of a world: the world view (top left), the plots (below it), the status strip (bottom
+ * left, as tall as its rows), and one tab per participant with its module panels (right, the window's whole
+ * height, so that a robot's panels fit one below the other). Its size, maximized state, dividers and tab are
+ * remembered between runs ({@link LayoutMemory}); the first time it takes a sensible share of the screen, with
+ * the dividers at {@link #MAIN_SHARE} and {@link #VIEW_SHARE}.
  */
 public final class MonitorWindow extends JFrame {
 
-    private static final Dimension DEFAULT_SIZE = new Dimension(1360, 900);
+    /** The size the window opens at the first time (less on a smaller screen). */
+    public static final Dimension DEFAULT_SIZE = new Dimension(1360, 900);
+    /** The first time: the share of the width for the world view, plots and status strip (the tabs get the rest). */
+    public static final double MAIN_SHARE = 0.58;
+    /**
+     * The first time: the world view's least share of the height above the status strip; the plots get the rest,
+     * up to {@link #PLOT_ROWS} rows of charts.
+     */
+    public static final double VIEW_SHARE = 0.5;
+    /** The first time: rows of charts shown whole below the world view, where the height allows. */
+    public static final int PLOT_ROWS = 2;
 
     private final String world;
     private final WorldView view;
@@ -31,6 +44,7 @@ public final class MonitorWindow extends JFrame {
     private final JSplitPane main;
     private final LayoutMemory memory;
     private boolean saved;
+    private boolean defaultViewDivider;
 
     public MonitorWindow(String world, List<ParticipantPanel> participants, WorldView view, PlotsPanel plots,
             StatusStrip strip, LayoutMemory memory) {
@@ -46,14 +60,28 @@ public final class MonitorWindow extends JFrame {
             tabs.addTab(participant.participant(), participant);
         }
         tabs.getAccessibleContext().setAccessibleName("participants");
-        left = new JSplitPane(JSplitPane.VERTICAL_SPLIT, true, view, plots);
-        left.setResizeWeight(0.6);
+        left = new JSplitPane(JSplitPane.VERTICAL_SPLIT, true, view, plots) {
+            @Override
+            public void doLayout() {
+                // the first time on screen (its height known, with the window's decorations): two rows of charts
+                // whole, the rest (at least VIEW_SHARE) for the world view
+                if (defaultViewDivider && isDisplayable() && getHeight() > 0) {
+                    defaultViewDivider = false;
+                    int height = getHeight() - getDividerSize();
+                    setDividerLocation(Math.max((int) (height * VIEW_SHARE), height - plots.heightFor(PLOT_ROWS)));
+                }
+                super.doLayout();
+            }
+        };
+        left.setResizeWeight(VIEW_SHARE);
         left.setOneTouchExpandable(true);
-        main = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, true, left, tabs);
-        main.setResizeWeight(0.62);
+        JPanel leftColumn = new JPanel(new BorderLayout());
+        leftColumn.add(left, BorderLayout.CENTER);
+        leftColumn.add(strip, BorderLayout.SOUTH); // as tall as its rows: every module's figures in view
+        main = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, true, leftColumn, tabs);
+        main.setResizeWeight(MAIN_SHARE);
         main.setOneTouchExpandable(true);
         getContentPane().add(main, BorderLayout.CENTER);
-        getContentPane().add(strip, BorderLayout.SOUTH);
         applyLayout();
     }
 
@@ -78,9 +106,12 @@ public final class MonitorWindow extends JFrame {
         int mainDivider = memory.number("divider.main", -1);
         int leftDivider = memory.number("divider.left", -1);
         main.setDividerLocation(mainDivider > 50 && mainDivider < getWidth() - 50 ? mainDivider
-                : (int) (getWidth() * 0.62));
-        left.setDividerLocation(leftDivider > 50 && leftDivider < getHeight() - 100 ? leftDivider
-                : (int) (getHeight() * 0.52));
+                : (int) (getWidth() * MAIN_SHARE));
+        if (leftDivider > 50 && leftDivider < getHeight() - 100) {
+            left.setDividerLocation(leftDivider);
+        } else {
+            defaultViewDivider = true; // placed at the first layout on screen
+        }
         String tab = memory.text("tab." + world, null);
         for (int i = 0; tab == null && i < this.participants.size(); i++) {
             if (this.participants.get(i).isRobot()) {

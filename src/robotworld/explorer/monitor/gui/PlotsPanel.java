@@ -18,6 +18,8 @@ import javax.swing.Scrollable;
 import javax.swing.SwingConstants;
 import javax.swing.Timer;
 import org.jfree.chart.ChartPanel;
+import org.jfree.chart.LegendItem;
+import org.jfree.chart.LegendItemCollection;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.plot.XYPlot;
@@ -27,6 +29,7 @@ import org.jfree.chart.renderer.xy.XYStepRenderer;
 import org.jfree.chart.title.LegendTitle;
 import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.RectangleEdge;
+import org.jfree.chart.ui.RectangleInsets;
 import org.jfree.data.xy.DefaultXYDataset;
 import robotworld.explorer.monitor.NumericChannels;
 import robotworld.explorer.monitor.PlotModel;
@@ -43,6 +46,9 @@ import robotworld.observe.ModuleRef;
 public final class PlotsPanel extends JPanel {
 
     static final int REFRESHES_PER_SECOND = 2;
+    /** A chart's height: two rows of charts fit below the world view at the window's default size. */
+    static final int CHART_HEIGHT = 140;
+    private static final int GAP = 6;
     private static final Color[] LINES = {new Color(0x1F, 0x77, 0xB4), new Color(0xFF, 0x7F, 0x0E),
         new Color(0x2C, 0xA0, 0x2C), new Color(0xD6, 0x27, 0x28), new Color(0x94, 0x67, 0xBD),
         new Color(0x8C, 0x56, 0x4B), new Color(0xE3, 0x77, 0xC2), new Color(0x7F, 0x7F, 0x7F)};
@@ -51,6 +57,8 @@ public final class PlotsPanel extends JPanel {
     private final PlotModel model;
     private final Map<String, Chart> charts = new LinkedHashMap<>();
     private final JToggleButton pause = new JToggleButton("Pause plots");
+    private final JScrollPane scroll;
+    private final JPanel header;
     private final Timer refresh = new Timer(1000 / REFRESHES_PER_SECOND, event -> refresh());
 
     /** One chart and what it shows. */
@@ -65,6 +73,7 @@ public final class PlotsPanel extends JPanel {
             NumberAxis time = new NumberAxis("s");
             NumberAxis values = new NumberAxis(unit);
             values.setAutoRangeIncludesZero(true);
+            values.setAutoRangeMinimumSize(1); // a channel that stays at 0 gets an axis of 0..1, not of 1E-9s
             time.setAutoRange(false);
             // set-points and states hold until the next command: steps; measurements: lines
             AbstractXYItemRenderer renderer = steps ? new XYStepRenderer() : new SamplingXYLineRenderer();
@@ -80,17 +89,38 @@ public final class PlotsPanel extends JPanel {
             chart = new JFreeChart(null, JFreeChart.DEFAULT_TITLE_FONT, plot, true);
             chart.setTitle(new TextTitle(title, new Font(Font.SANS_SERIF, Font.BOLD, 12)));
             chart.setBackgroundPaint(Color.WHITE);
-            LegendTitle legend = chart.getLegend();
+            chart.removeLegend();
+            // a solid square per line, in its colour: a 2-pixel line sample is hard to tell apart at a glance
+            LegendTitle legend = new LegendTitle(() -> {
+                LegendItemCollection items = new LegendItemCollection();
+                for (int i = 0; i < data.getSeriesCount(); i++) {
+                    items.add(new LegendItem(String.valueOf(data.getSeriesKey(i)), null, null, null,
+                            new Rectangle(-5, -5, 10, 10), LINES[i % LINES.length]));
+                }
+                return items;
+            });
             legend.setPosition(RectangleEdge.RIGHT);
-            legend.setItemFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
-            panel = new ChartPanel(chart, 360, 180, 200, 120, 2000, 1200, true, true, true, true, false, false);
+            legend.setItemFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+            legend.setBackgroundPaint(Color.WHITE);
+            legend.setItemLabelPadding(new RectangleInsets(1, 3, 1, 2));
+            chart.addLegend(legend);
+            panel = new ChartPanel(chart, 360, CHART_HEIGHT, 200, 110, 2000, 1200, true, true, true, true, false,
+                    false);
             panel.setDisplayToolTips(false);
-            panel.setPreferredSize(new Dimension(360, 180));
+            panel.setPreferredSize(new Dimension(360, CHART_HEIGHT));
             panel.getAccessibleContext().setAccessibleName("plot " + title);
         }
     }
 
     public PlotsPanel(PlotModel model) {
+        this(model, java.util.Set.of());
+    }
+
+    /**
+     * Plots with the charts of {@code first}'s modules (the robots: they move) before the others', each group in
+     * the model's order.
+     */
+    public PlotsPanel(PlotModel model, java.util.Set<String> first) {
         super(new BorderLayout());
         this.model = model;
         setName("plots");
@@ -107,7 +137,9 @@ public final class PlotsPanel extends JPanel {
         header.add(new JLabel("last " + (int) PlotModel.WINDOW_SECONDS + " s of every module's values and call latency"));
         add(header, BorderLayout.NORTH);
         Grid grid = new Grid();
-        for (PlotModel.ModuleSeries series : model.modules()) {
+        java.util.List<PlotModel.ModuleSeries> ordered = new java.util.ArrayList<>(model.modules());
+        ordered.sort(java.util.Comparator.comparing(series -> !first.contains(series.module().participant())));
+        for (PlotModel.ModuleSeries series : ordered) {
             ModuleRef module = series.module();
             boolean steps = !module.moduleClass().equals("IRDistanceModule");
             Chart chart = new Chart(module.label(), NumericChannels.unit(module.moduleClass()), series, steps);
@@ -120,15 +152,23 @@ public final class PlotsPanel extends JPanel {
         if (model.modules().isEmpty()) {
             grid.add(new JLabel("This world has no modules.", SwingConstants.CENTER));
         }
-        JScrollPane scroll = new JScrollPane(grid);
+        scroll = new JScrollPane(grid);
         scroll.getVerticalScrollBar().setUnitIncrement(24);
         add(scroll, BorderLayout.CENTER);
+        this.header = header;
+    }
+
+    /** The height that shows {@code rows} rows of charts whole, with the pause button above them. */
+    public int heightFor(int rows) {
+        java.awt.Insets insets = scroll.getInsets();
+        return header.getPreferredSize().height + rows * CHART_HEIGHT + Math.max(0, rows - 1) * GAP + insets.top
+                + insets.bottom;
     }
 
     /** Charts in two columns, as wide as the scroll pane: they never scroll sideways. */
     private static final class Grid extends JPanel implements Scrollable {
         Grid() {
-            super(new GridLayout(0, 2, 6, 6));
+            super(new GridLayout(0, 2, GAP, GAP));
         }
 
         @Override
@@ -208,6 +248,19 @@ public final class PlotsPanel extends JPanel {
 
     private static void reveal(Chart chart) {
         chart.panel.scrollRectToVisible(new Rectangle(0, 0, chart.panel.getWidth(), chart.panel.getHeight()));
+    }
+
+    /** How many charts are wholly in view now (not scrolled out, not cut by the panel's edge). */
+    public int chartsInView() {
+        int whole = 0;
+        for (Chart chart : charts.values()) {
+            java.awt.Rectangle visible = chart.panel.getVisibleRect();
+            if (chart.panel.isShowing() && visible.width == chart.panel.getWidth()
+                    && visible.height == chart.panel.getHeight()) {
+                whole++;
+            }
+        }
+        return whole;
     }
 
     /** Points the chart of {@code module} draws now, over all its lines. */

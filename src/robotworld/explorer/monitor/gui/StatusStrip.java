@@ -36,7 +36,8 @@ public final class StatusStrip extends JPanel {
     public static final Color NOT_ANSWERING = new Color(0xE0, 0x3A, 0x3E);
     /** The dot of a quiet participant. */
     public static final Color UNKNOWN = new Color(0x9A, 0xA1, 0xAB);
-    private static final int VISIBLE_ROWS = 4;
+    /** Rows shown without scrolling: a world's every module up to this many. */
+    static final int VISIBLE_ROWS = 12;
 
     private final TrafficStatistics statistics;
     private final JPanel participants = new JPanel(new FlowLayout(FlowLayout.LEFT, 14, 2));
@@ -61,10 +62,30 @@ public final class StatusStrip extends JPanel {
         table.setFocusable(false);
         table.getTableHeader().setReorderingAllowed(false);
         table.getAccessibleContext().setAccessibleName("modules");
-        int[] widths = {120, 130, 55, 70, 85, 55, 360};
+        int[] widths = {120, 115, 58, 58, 88, 50, 290};
         for (int i = 0; i < widths.length; i++) {
             table.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
+            if (i >= 2 && i <= 5) { // the figures keep their headers readable; names and answers give way
+                int header = table.getTableHeader().getDefaultRenderer().getTableCellRendererComponent(table,
+                        rows.getColumnName(i), false, false, -1, i).getPreferredSize().width + 6;
+                table.getColumnModel().getColumn(i).setMinWidth(Math.max(widths[i], header));
+                table.getColumnModel().getColumn(i).setPreferredWidth(Math.max(widths[i], header));
+            }
         }
+        // participant and module names whole (up to a limit); the last answer gives way
+        java.awt.FontMetrics metrics = table.getFontMetrics(table.getFont());
+        int[] names = {0, 0};
+        for (TrafficStatistics.ModuleFigures f : statistics.snapshot().modules()) {
+            names[0] = Math.max(names[0], metrics.stringWidth(f.module().participant()));
+            names[1] = Math.max(names[1], metrics.stringWidth(f.module().name()));
+        }
+        for (int i = 0; i < 2; i++) {
+            int width = Math.min(170, Math.max(widths[i], names[i] + 12));
+            table.getColumnModel().getColumn(i).setMinWidth(Math.min(width, 100));
+            table.getColumnModel().getColumn(i).setPreferredWidth(width);
+        }
+        table.getColumnModel().getColumn(6).setMinWidth(120);
+        table.getColumnModel().getColumn(6).setPreferredWidth(200);
         DefaultTableCellRenderer numbers = new DefaultTableCellRenderer();
         numbers.setHorizontalAlignment(JLabel.RIGHT);
         for (int i = 2; i <= 5; i++) {

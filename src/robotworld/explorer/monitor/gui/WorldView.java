@@ -8,6 +8,7 @@ import java.awt.FontMetrics;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.Shape;
 import java.awt.Stroke;
 import java.awt.geom.Arc2D;
 import java.awt.geom.Ellipse2D;
@@ -29,8 +30,8 @@ import robotworld.observe.GroundTruth;
 
 /**
  * The world seen from above: each simulated robot in its arena as its simulator publishes it (obstacles, the body
- * with its heading, a trail of the last {@value #TRAIL_SECONDS} s, IR rays coloured by the distance they measure,
- * the bumper ring with touching bumpers in red and a flash when contact begins, track speeds as arrows), scaled to
+ * with its heading and its name on a plate placed where it hides the least, a trail of the last
+ * {@value #TRAIL_SECONDS} s, IR rays coloured by the distance they measure and numbered by sensor, the bumper ring with touching bumpers in red and a flash when contact begins, track speeds as arrows), scaled to
  * fit. Without ground truth (real hardware), it draws the first robot in its own frame, heading up, from what its
  * modules report: rays from the IR distances at the assumed sensor angles, the bumper ring from the bumper
  * answers, arrows from motors 1 and 2.
@@ -68,6 +69,7 @@ public final class WorldView extends JComponent {
     static final int FRAMES_PER_SECOND = 25;
     private static final long FLASH_NANOS = 700_000_000L;
     private static final int MARGIN = 28;
+    private static final double NUMBER_RADIUS = 7;
     private static final Color BACKGROUND = new Color(0xEE, 0xF0, 0xF3);
     private static final Color FLOOR = Color.WHITE;
     private static final Color GRID = new Color(0xE4, 0xE7, 0xEB);
@@ -285,6 +287,15 @@ public final class WorldView extends JComponent {
         g.setStroke(new BasicStroke(2f));
         g.draw(floor);
         long now = System.nanoTime();
+        List<Shape> clutter = new ArrayList<>(); // what a robot's name must not hide: obstacles, rays, numbers
+        for (GroundTruth frame : frames) {
+            for (GroundTruth.Obstacle o : frame.arena().obstacles()) {
+                Point2D topLeft = m.point(o.x(), o.y() + o.height());
+                clutter.add(new Rectangle2D.Double(topLeft.getX(), topLeft.getY(), m.length(o.width()),
+                        m.length(o.height())));
+            }
+        }
+        List<Object[]> names = new ArrayList<>();
         for (RobotState state : states) {
             paintTrail(g, m, state.trail);
             GroundTruth frame = state.frame;
@@ -293,9 +304,9 @@ public final class WorldView extends JComponent {
             double radius = m.length(body.radius());
             List<double[]> rays = new ArrayList<>();
             for (GroundTruth.Ray ray : frame.rays()) {
-                rays.add(new double[] {ray.angle(), ray.length(), ray.range()});
+                rays.add(new double[] {ray.angle(), ray.length(), ray.range(), ray.sensor()});
             }
-            paintRays(g, centre, radius, body.heading(), m.scale(), rays);
+            paintRays(g, centre, radius, body.heading(), m.scale(), rays, clutter);
             paintBody(g, centre, radius, body.heading());
             List<Object[]> bumpers = new ArrayList<>();
             for (GroundTruth.Bumper bumper : frame.bumpers()) {
@@ -314,9 +325,10 @@ public final class WorldView extends JComponent {
                 }
             }
             paintTracks(g, centre, radius, body.heading(), left, right);
-            g.setColor(TEXT);
-            g.setFont(getFont().deriveFont(Font.BOLD, 11f));
-            g.drawString(frame.robot(), (float) (centre.getX() + radius + 6), (float) (centre.getY() - radius - 4));
+            names.add(new Object[] {frame.robot(), centre, ringOuter(radius)});
+        }
+        for (Object[] name : names) { // last: over everything else, where it hides the least
+            clutter.add(paintName(g, (String) name[0], (Point2D) name[1], (Double) name[2], clutter));
         }
         paintCaption(g, first, frames.size());
         paintLegend(g, m);
@@ -366,12 +378,17 @@ public final class WorldView extends JComponent {
         return fraction < 1 / 3.0 ? NEAR : fraction < 2 / 3.0 ? MIDDLE : FAR;
     }
 
-    /** Rays {angle, length, range} from the body outline; screen angles turn the other way (y down). */
-    private static void paintRays(Graphics2D g, Point2D centre, double radius, double heading, double scale,
-            List<double[]> rays) {
+    /**
+     * Rays {angle, length, range, sensor} from the body outline, each with its sensor's number in a small disc
+     * beyond its end (outside the bumper ring); screen angles turn the other way (y down). Adds the rays and the
+     * discs to {@code clutter}.
+     */
+    private void paintRays(Graphics2D g, Point2D centre, double radius, double heading, double scale,
+            List<double[]> rays, List<Shape> clutter) {
         Stroke dashed = new BasicStroke(1.2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f},
                 0f);
         Stroke solid = new BasicStroke(2.2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND);
+        List<Object[]> numbers = new ArrayList<>();
         for (double[] ray : rays) {
             double direction = Math.toRadians(heading + ray[0]);
             double dx = Math.cos(direction);
@@ -380,13 +397,86 @@ public final class WorldView extends JComponent {
             double startY = centre.getY() + radius * dy;
             boolean hit = ray[1] < ray[2];
             double length = (hit ? ray[1] : ray[2]) * scale;
-            g.setColor(rayColour(ray[1], ray[2]));
+            Color colour = rayColour(ray[1], ray[2]);
+            g.setColor(colour);
             g.setStroke(hit ? solid : dashed);
-            g.draw(new Line2D.Double(startX, startY, startX + length * dx, startY + length * dy));
+            Line2D line = new Line2D.Double(startX, startY, startX + length * dx, startY + length * dy);
+            g.draw(line);
+            clutter.add(line);
             if (hit) {
                 g.fill(new Ellipse2D.Double(startX + length * dx - 3.5, startY + length * dy - 3.5, 7, 7));
             }
+            double at = Math.max(radius + length + NUMBER_RADIUS + 4, ringOuter(radius) + NUMBER_RADIUS + 2);
+            double x = Math.max(NUMBER_RADIUS + 1, Math.min(getWidth() - NUMBER_RADIUS - 1, centre.getX() + at * dx));
+            double y = Math.max(NUMBER_RADIUS + 1, Math.min(getHeight() - NUMBER_RADIUS - 1, centre.getY() + at * dy));
+            numbers.add(new Object[] {x, y, colour, (int) ray[3]});
         }
+        g.setFont(getFont().deriveFont(Font.BOLD, 10f));
+        FontMetrics metrics = g.getFontMetrics();
+        for (Object[] number : numbers) { // after every ray: no ray crosses a number
+            Ellipse2D disc = new Ellipse2D.Double((Double) number[0] - NUMBER_RADIUS, (Double) number[1] - NUMBER_RADIUS,
+                    2 * NUMBER_RADIUS, 2 * NUMBER_RADIUS);
+            g.setColor(Color.WHITE);
+            g.fill(disc);
+            g.setColor((Color) number[2]);
+            g.setStroke(new BasicStroke(1.6f));
+            g.draw(disc);
+            g.setColor(TEXT);
+            String text = String.valueOf(number[3]);
+            g.drawString(text, (float) ((Double) number[0] - metrics.stringWidth(text) / 2.0),
+                    (float) ((Double) number[1] + (metrics.getAscent() - metrics.getDescent()) / 2.0));
+            clutter.add(disc.getBounds2D());
+        }
+    }
+
+    /** The outer edge of the bumper ring around a body of {@code radius} pixels. */
+    private static double ringOuter(double radius) {
+        return radius + Math.max(3, radius * 0.12) + 4;
+    }
+
+    /**
+     * A robot's name on a light plate beside its body, on the side where the plate covers the fewest rays, numbers
+     * and obstacles and stays inside the view. Returns the plate.
+     */
+    private Rectangle2D paintName(Graphics2D g, String name, Point2D centre, double ring, List<Shape> clutter) {
+        g.setFont(getFont().deriveFont(Font.BOLD, 11.5f));
+        FontMetrics metrics = g.getFontMetrics();
+        double width = metrics.stringWidth(name) + 10;
+        double height = metrics.getHeight() + 2;
+        Rectangle2D best = null;
+        double bestCost = Double.MAX_VALUE;
+        for (int degrees : new int[] {45, 135, -45, -135, 90, -90, 0, 180}) { // up right first, as a map labels
+            double a = Math.toRadians(degrees);
+            double cos = Math.cos(a);
+            double sin = Math.sin(a);
+            double reach = ring + 4 + Math.abs(cos) * width / 2 + Math.abs(sin) * height / 2;
+            Rectangle2D plate = new Rectangle2D.Double(centre.getX() + reach * cos - width / 2,
+                    centre.getY() - reach * sin - height / 2, width, height);
+            double cost = 0;
+            if (plate.getMinX() < 0 || plate.getMinY() < 24 || plate.getMaxX() > getWidth()
+                    || plate.getMaxY() > getHeight() - 18) {
+                cost += 1000; // off the view, or over the caption or the legend
+            }
+            for (Shape shape : clutter) {
+                if (shape instanceof Line2D line ? line.intersects(plate) : shape.intersects(plate)) {
+                    cost += shape instanceof Line2D ? 10 : 6;
+                }
+            }
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = plate;
+            }
+        }
+        java.awt.geom.RoundRectangle2D shape = new java.awt.geom.RoundRectangle2D.Double(best.getX(), best.getY(),
+                best.getWidth(), best.getHeight(), 8, 8);
+        g.setColor(new Color(0xFF, 0xFF, 0xFF, 0xEB));
+        g.fill(shape);
+        g.setColor(BODY);
+        g.setStroke(new BasicStroke(1.2f));
+        g.draw(shape);
+        g.setColor(TEXT);
+        g.drawString(name, (float) (best.getX() + 5), (float) (best.getY() + 1 + metrics.getAscent()));
+        return best;
     }
 
     private static void paintBody(Graphics2D g, Point2D centre, double radius, double heading) {
@@ -557,10 +647,10 @@ public final class WorldView extends JComponent {
         double[] distances = snapshot.distances();
         for (int i = 0; i < distances.length; i++) {
             if (!Double.isNaN(distances[i])) {
-                rays.add(new double[] {ASSUMED_SENSOR_ANGLES[i], distances[i], ASSUMED_RANGE});
+                rays.add(new double[] {ASSUMED_SENSOR_ANGLES[i], distances[i], ASSUMED_RANGE, i + 1});
             }
         }
-        paintRays(g, centre, radius, 90, scale, rays);
+        paintRays(g, centre, radius, 90, scale, rays, new ArrayList<>());
         paintBody(g, centre, radius, 90);
         List<Object[]> bumpers = new ArrayList<>();
         Boolean[] contacts = snapshot.contacts();

@@ -10,6 +10,7 @@ import robotworld.explorer.monitor.gui.ModulePanel;
 import robotworld.observe.AnswerSeen;
 import robotworld.observe.Gap;
 import robotworld.observe.ModuleRef;
+import robotworld.observe.RequestSeen;
 import robotworld.observe.WorldLayout;
 import robotworld.observe.WorldObserver;
 import robotworld.observe.WorldTap;
@@ -20,8 +21,8 @@ import robotworld.xvsm.CallTuple;
 /**
  * What every XVSM monitor does (thesis table 3): watch the module's answers through a
  * {@link WorldTap} and, on the Swing thread, show what the ANSWER container already held (the module's last known
- * state), then mark the panel fresh on every answer, show error answers as problems and hand good answers to
- * {@link #show}. A subclass only says how an answer of its module type changes its panel.
+ * state), then mark the panel fresh on every answer, show error answers as problems (until the next call or good
+ * answer) and hand good answers to {@link #show}. A subclass only says how an answer of its module type changes its panel.
  *
  * <p>Two ways to build one: with a {@link Capi} (the naming convention's constructor), it taps the module's
  * containers on its own; with a shared {@link WorldTap} (as the monitor window does for a whole world), it is one
@@ -37,11 +38,21 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
     private final P panel;
     private final WorldTap tap;
     private final boolean ownsTap;
+    /** The key of the failed call whose problem the panel shows, or null. Swing thread. */
+    private String problemKey;
     private final WorldObserver observer = new WorldObserver() {
         @Override
         public void answerSeen(AnswerSeen event) {
             if (event.module().equals(ref)) {
                 SwingUtilities.invokeLater(() -> display(event.answer(), event.earlier() ? null : event.at()));
+            }
+        }
+
+        @Override
+        public void requestSeen(RequestSeen event) {
+            if (event.module().equals(ref)) {
+                String key = event.request().key();
+                SwingUtilities.invokeLater(() -> newCall(key));
             }
         }
 
@@ -133,6 +144,22 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
         }
     }
 
+    /**
+     * A new call to the module is on its way: a failed earlier call's problem line goes, so that what the panel
+     * says belongs to the calls being made now. (The request of the very call that failed can be seen after its
+     * error answer; it does not clear its own problem.)
+     */
+    private void newCall(String key) {
+        if (problemKey != null && !problemKey.equals(key)) {
+            clearProblem();
+        }
+    }
+
+    private void clearProblem() {
+        problemKey = null;
+        panel.clearProblem();
+    }
+
     /** Shows an answer that arrived at {@code when}, or (null) one found when monitoring started. */
     private void display(CallTuple answer, Instant when) {
         if (when == null) {
@@ -142,11 +169,12 @@ public abstract class XVSMMonitor<P extends ModulePanel> implements Monitor {
         }
         if (AnswerText.isError(answer)) {
             panel.showProblem(AnswerText.function(answer) + ": " + AnswerText.errorMessage(answer));
+            problemKey = answer.key();
             return;
         }
         try {
             show(answer, panel);
-            panel.clearProblem();
+            clearProblem();
             if (when != null) {
                 panel.clearStopped();
             }
