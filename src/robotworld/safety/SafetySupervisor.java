@@ -42,8 +42,8 @@ import robotworld.space.Timeout;
  *       requests, publishes stop records and answers (two threads, so a slow heartbeat does not hold up a
  *       poll);</li>
  *   <li>{@code safety-watch}: every {@value #CHECK_MILLIS} ms, stops actuators whose remote commander is silent or
- *       ended (rule 3) and, when the space has not been reached for an actuator's command timeout, every engaged
- *       actuator (rule 4); it also carries out stop requests. It never waits for the network, only for the
+ *       ended (rule 3) and, when the space has not been reached for an actuator's command timeout, every actuator
+ *       that a remote commander keeps engaged (rule 4); it also carries out stop requests. It never waits for the network, only for the
  *       hardware.</li>
  * </ul>
  * Without a space (a program on its own hardware) only the clean-exit rule applies: {@link #stopAll}.
@@ -525,7 +525,10 @@ public final class SafetySupervisor implements AutoCloseable {
                     continue;
                 }
                 long timeout = guard.commandTimeout().toNanos();
-                if (!heartbeatPeriod.isZero() && overdue && sinceContact > timeout) {
+                // rule 4 is about commands that came through the space and went stale with it: an actuator only
+                // this program commands is not commanded through the space (its own end is rules 1 and 2)
+                if (!heartbeatPeriod.isZero() && overdue && sinceContact > timeout
+                        && !guard.remoteEngagers().isEmpty()) {
                     spaceLost(sinceContact);
                     guard.stop(StopCause.SPACE_LOST, "no contact with the space " + space.spaceUri() + " for "
                             + millis(sinceContact) + " ms (command timeout " + guard.commandTimeout().toMillis()
@@ -561,8 +564,8 @@ public final class SafetySupervisor implements AutoCloseable {
     private void spaceLost(long sinceContact) {
         if (!spaceLost) {
             spaceLost = true;
-            LOG.warn("{} cannot reach its space {}: no contact for {} ms; its engaged actuators are stopped", ownId,
-                    space.spaceUri(), millis(sinceContact));
+            LOG.warn("{} cannot reach its space {}: no contact for {} ms; the actuators commanded through it are"
+                    + " stopped", ownId, space.spaceUri(), millis(sinceContact));
         }
     }
 

@@ -33,7 +33,8 @@ import robotworld.xvsm.XVSMRuntime;
  * <p>The module is polled every 0.1 ms from this JVM, which also causes each event (a call, a signal to a child
  * JVM, closing the space server), so both ends use the same clock. Paths: close of the runtime; failed(...) for an
  * uncaught exception; SIGTERM of the serving program (a child JVM); SIGKILL of it (the module's watchdog, 500 ms);
- * SIGKILL of a remote commander (command timeout 500 ms); the space server closed (command timeout 500 ms);
+ * SIGKILL of a remote commander (command timeout 500 ms); the space server closed while a remote commander drives
+ * the motor (command timeout 500 ms);
  * {@code rwe stop} from a third program (a {@link WorldStop} over its own connection). Arguments, or
  * {@code -Dbench.paths=a,b}, name the parts to run (close, exception, sigterm, sigkill, commander, space, stop, bus,
  * calls); none: all. Knobs: {@code bench.trials}, {@code bench.callRuns}, {@code bench.calls},
@@ -165,10 +166,14 @@ public final class SafetyBenchmark {
     private static Event spaceTrial(SafetyRig rig) throws Exception {
         SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(0));
         XVSMRuntime runtime = XVSMRuntime.connect(server.uri().toString(), "robot-pc");
-        XVSMMotorModuleLocal motor = serveMotor(runtime, rig);
+        serveMotor(runtime, rig);
+        // commanded through the space: what only the serving program commands is not stopped for a lost space
+        XVSMRuntime laptop = XVSMRuntime.connect(server.uri().toString(), "laptop");
+        XVSMMotorModuleRemote motor = laptop.own(new XVSMMotorModuleRemote(laptop, SafetyRig.ROBOT, SafetyRig.MOTOR));
         motor.setMotor(1, 0.45);
         motor.setMotor(2, 0.45);
         Thread.sleep(300); // heartbeats under way
+        closeLater(laptop);
         closeLater(runtime);
         return server::close;
     }
