@@ -255,6 +255,18 @@ public final class SafetySupervisor implements AutoCloseable {
         }
     }
 
+    /**
+     * A bus module was found stopped by its own watchdog as this program armed it: the program that fed it before
+     * died or went silent (a hard death, nobody else saw it). Recorded as a {@link StopCause#WATCHDOG} stop, logged
+     * and published, so that monitors show it; its time is when it was found. Nobody is owed a notice: this
+     * program has not commanded the module yet.
+     */
+    public void watchdogFoundTripped(String participant, String module, String detail) {
+        stopped(new StopRecord(java.time.Instant.now(), participant, module, StopCause.WATCHDOG,
+                detail + "; found when " + ownId + " armed it", "the module went to its safe state by itself",
+                "its watchdog", null, null));
+    }
+
     /** The stop records of this program, newest last (at most 100). */
     public List<StopRecord> recentStops() {
         return List.copyOf(recent);
