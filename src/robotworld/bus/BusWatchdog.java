@@ -36,8 +36,11 @@ public final class BusWatchdog implements AutoCloseable {
     private static final long LONGEST_TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
     private static final long SHORTEST_TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
 
-    private record Armed(int address, int millis, Consumer<String> onTrip) {
+    private record Armed(int address, int millis, Consumer<String> onTrip, Consumer<String> onFoundTripped) {
     }
+
+    /** What {@code onFoundTripped} is told when a module is found tripped as it is armed. */
+    public static final String FOUND_TRIPPED = "stopped by its watchdog while no program fed it";
 
     private final RS485Bus bus;
     private final AtomicLongArray lastExchange = new AtomicLongArray(248);
@@ -60,22 +63,38 @@ public final class BusWatchdog implements AutoCloseable {
     }
 
     /**
-     * Arms the watchdog of the module at {@code address}. That it had tripped before (its previous master went
-     * silent or ended) is only logged: it happened before this program, which has commanded nothing yet. A module
-     * that does not answer now is logged and armed as soon as it answers (tried every second), so a program does
-     * not fail to start for a module that is off for a moment.
+     * Arms the watchdog of the module at {@code address}, with nobody told when it is found tripped as it is armed
+     * ({@link #arm(int, Duration, Consumer, Consumer)}).
      *
      * @param timeout 10..65535 ms
-     * @param onTrip  told, with a sentence, whenever the module's watchdog is found tripped
+     * @param onTrip  told, with a sentence, whenever the module's watchdog is found tripped while this program feeds it
      * @return false when the module has no watchdog (it refuses the register); it is then logged once
      */
     public boolean arm(int address, Duration timeout, Consumer<String> onTrip) {
+        return arm(address, timeout, onTrip, detail -> { });
+    }
+
+    /**
+     * Arms the watchdog of the module at {@code address}. That it had tripped before (its previous master went
+     * silent or died: it stopped by itself) is logged and told to {@code onFoundTripped}, so that the stop is
+     * recorded and shown; it happened before this program, which has commanded nothing yet, so nobody is owed a
+     * notice. A module that does not answer now is logged and armed as soon as it answers (tried every second), so a
+     * program does not fail to start for a module that is off for a moment.
+     *
+     * @param timeout        10..65535 ms
+     * @param onTrip         told, with a sentence, whenever the module's watchdog is found tripped while this
+     *                       program feeds it
+     * @param onFoundTripped told, with {@link #FOUND_TRIPPED}, when the module is found tripped as it is armed
+     * @return false when the module has no watchdog (it refuses the register); it is then logged once
+     */
+    public boolean arm(int address, Duration timeout, Consumer<String> onTrip, Consumer<String> onFoundTripped) {
         Objects.requireNonNull(onTrip, "onTrip");
+        Objects.requireNonNull(onFoundTripped, "onFoundTripped");
         long millis = timeout.toMillis();
         if (millis < 10 || millis > 65_535) {
             throw new IllegalArgumentException("a watchdog timeout is 10..65535 ms, was " + millis);
         }
-        Armed entry = new Armed(address, (int) millis, onTrip);
+        Armed entry = new Armed(address, (int) millis, onTrip, onFoundTripped);
         try {
             return armNow(entry);
         } catch (BusException noAnswer) {
@@ -104,12 +123,17 @@ public final class BusWatchdog implements AutoCloseable {
                     bus.describe(address), bus.portName(), refused.getMessage());
             return false;
         }
-        if (trippedBefore) {
-            LOG.info("{} on {}: its communication watchdog had tripped before this program armed it (its previous "
-                    + "master went silent or ended)", bus.describe(address), bus.portName());
-        }
         armed.put(address, entry);
         startFeeder();
+        if (trippedBefore) {
+            LOG.info("{} on {}: its communication watchdog had tripped before this program armed it (its previous "
+                    + "master went silent or died)", bus.describe(address), bus.portName());
+            try {
+                entry.onFoundTripped().accept(FOUND_TRIPPED);
+            } catch (RuntimeException e) {
+                LOG.warn("recording the earlier trip of {} failed: {}", bus.describe(address), e.toString());
+            }
+        }
         return true;
     }
 

@@ -282,6 +282,16 @@ public final class RS485Bus implements Closeable {
         return watchdog.arm(checkAddress(address), timeout, onTrip);
     }
 
+    /**
+     * {@link #armWatchdog(int, Duration, Consumer)}, and tells {@code onFoundTripped} when the module is found to
+     * have stopped by its watchdog before this program armed it ({@link BusWatchdog#arm(int, Duration, Consumer,
+     * Consumer)}).
+     */
+    public boolean armWatchdog(int address, Duration timeout, Consumer<String> onTrip,
+                               Consumer<String> onFoundTripped) {
+        return watchdog.arm(checkAddress(address), timeout, onTrip, onFoundTripped);
+    }
+
     /** The watchdogs this bus keeps fed. */
     public BusWatchdog watchdog() {
         return watchdog;

@@ -55,7 +55,8 @@ public final class HardwareSafety implements AutoCloseable {
             supervisor.guard(participant, module, actuator);
             int typeDefault = hardware instanceof MotorModule ? SafetySettings.DEFAULT_MOTOR_WATCHDOG_MILLIS : 0;
             SafeStates.armWatchdog(hardware, supervisor.watchdogMillis(participant, module, typeDefault),
-                    detail -> supervisor.watchdogTripped(participant, module, detail));
+                    detail -> supervisor.watchdogTripped(participant, module, detail),
+                    detail -> supervisor.watchdogFoundTripped(participant, module, detail));
         }
         return hardware;
     }

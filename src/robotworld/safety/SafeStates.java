@@ -81,14 +81,23 @@ public final class SafeStates {
      * Arms the communication watchdog of a module on the robot bus ({@code RS485Bus#armWatchdog}); does nothing for
      * hardware that is not a bus module proxy, or when {@code millis} is 0.
      *
-     * @param onTrip told whenever the module is found to have tripped
+     * @param onTrip told whenever the module is found to have tripped while this program feeds it
      * @return whether the watchdog is armed
      */
     public static boolean armWatchdog(Object hardware, int millis, Consumer<String> onTrip) {
+        return armWatchdog(hardware, millis, onTrip, detail -> { });
+    }
+
+    /**
+     * {@link #armWatchdog(Object, int, Consumer)}; {@code onFoundTripped} is told when the module had stopped by its
+     * watchdog before this program armed it (its previous program died or went silent).
+     */
+    public static boolean armWatchdog(Object hardware, int millis, Consumer<String> onTrip,
+                                      Consumer<String> onFoundTripped) {
         if (millis <= 0 || !(hardware instanceof ModuleProxy proxy)) {
             return false;
         }
-        return proxy.bus().armWatchdog(proxy.address(), Duration.ofMillis(millis), onTrip);
+        return proxy.bus().armWatchdog(proxy.address(), Duration.ofMillis(millis), onTrip, onFoundTripped);
     }
 
     /** Stops feeding the watchdog of a bus module proxy armed with {@link #armWatchdog}. */

@@ -42,8 +42,8 @@ import robotworld.space.Timeout;
  *       requests, publishes stop records and answers (two threads, so a slow heartbeat does not hold up a
  *       poll);</li>
  *   <li>{@code safety-watch}: every {@value #CHECK_MILLIS} ms, stops actuators whose remote commander is silent or
- *       ended (rule 3) and, when the space has not been reached for an actuator's command timeout, every engaged
- *       actuator (rule 4); it also carries out stop requests. It never waits for the network, only for the
+ *       ended (rule 3) and, when the space has not been reached for an actuator's command timeout, every actuator
+ *       that a remote commander keeps engaged (rule 4); it also carries out stop requests. It never waits for the network, only for the
  *       hardware.</li>
  * </ul>
  * Without a space (a program on its own hardware) only the clean-exit rule applies: {@link #stopAll}.
@@ -253,6 +253,18 @@ public final class SafetySupervisor implements AutoCloseable {
                 watch.execute(() -> guard.stop(StopCause.WATCHDOG, detail, null, null));
             }
         }
+    }
+
+    /**
+     * A bus module was found stopped by its own watchdog as this program armed it: the program that fed it before
+     * died or went silent (a hard death, nobody else saw it). Recorded as a {@link StopCause#WATCHDOG} stop, logged
+     * and published, so that monitors show it; its time is when it was found. Nobody is owed a notice: this
+     * program has not commanded the module yet.
+     */
+    public void watchdogFoundTripped(String participant, String module, String detail) {
+        stopped(new StopRecord(java.time.Instant.now(), participant, module, StopCause.WATCHDOG,
+                detail + "; found when " + ownId + " armed it", "the module went to its safe state by itself",
+                "its watchdog", null, null));
     }
 
     /** The stop records of this program, newest last (at most 100). */
@@ -525,7 +537,10 @@ public final class SafetySupervisor implements AutoCloseable {
                     continue;
                 }
                 long timeout = guard.commandTimeout().toNanos();
-                if (!heartbeatPeriod.isZero() && overdue && sinceContact > timeout) {
+                // rule 4 is about commands that came through the space and went stale with it: an actuator only
+                // this program commands is not commanded through the space (its own end is rules 1 and 2)
+                if (!heartbeatPeriod.isZero() && overdue && sinceContact > timeout
+                        && !guard.remoteEngagers().isEmpty()) {
                     spaceLost(sinceContact);
                     guard.stop(StopCause.SPACE_LOST, "no contact with the space " + space.spaceUri() + " for "
                             + millis(sinceContact) + " ms (command timeout " + guard.commandTimeout().toMillis()
@@ -561,8 +576,8 @@ public final class SafetySupervisor implements AutoCloseable {
     private void spaceLost(long sinceContact) {
         if (!spaceLost) {
             spaceLost = true;
-            LOG.warn("{} cannot reach its space {}: no contact for {} ms; its engaged actuators are stopped", ownId,
-                    space.spaceUri(), millis(sinceContact));
+            LOG.warn("{} cannot reach its space {}: no contact for {} ms; the actuators commanded through it are"
+                    + " stopped", ownId, space.spaceUri(), millis(sinceContact));
         }
     }
 

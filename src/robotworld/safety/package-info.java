@@ -16,18 +16,23 @@
  *   <li><b>Hard deaths</b> (SIGKILL, a crash, a pulled cable): bus modules have a communication watchdog, a
  *       holding register with a timeout in ms (0 = off); a module that hears no valid frame addressed to it for
  *       that long goes to its safe state by itself and sets a status bit. {@code RS485Bus} arms it and keeps it
- *       fed while the program lives ({@code docs/bus.md}).</li>
+ *       fed while the program lives ({@code docs/bus.md}). The next program that arms a module and finds it
+ *       tripped records that stop (nobody else was left to).</li>
  *   <li><b>Remote commanders.</b> An actuator is kept away from its safe state only while the programs that
  *       commanded it there are alive: the serving program stops it when one of them has been silent (no call, no
  *       changed heartbeat) for the actuator's <i>command timeout</i> (default 500 ms), or said in its last
  *       heartbeat that it ended.</li>
  *   <li><b>Losing the space.</b> A serving program that has not reached its space for an engaged actuator's
- *       command timeout stops it, and says so once in its log.</li>
+ *       command timeout stops it if a remote commander (a program other than the serving one, commanding through
+ *       the space) keeps it engaged, and says so once in its log. An actuator engaged only by the serving program's
+ *       own commands keeps running: they never went through the space, and that program's end is rules 1 and
+ *       2.</li>
  *   <li><b>Stop everything.</b> A {@link robotworld.safety.StopRequest} (from {@code rwe stop WORLD} or a STOP
  *       button, {@link robotworld.safety.WorldStop}) makes every serving program stop its actuators of the named
  *       participants at once, and answer with one {@link robotworld.safety.StopAnswer} per module.</li>
  *   <li><b>Every stop is recorded</b>: logged by the program that stopped it, published as a
- *       {@link robotworld.safety.StopRecord} (who, why, when, what was done) and shown by monitors.</li>
+ *       {@link robotworld.safety.StopRecord} (who, why, when, what was done) and shown by monitors; a bus
+ *       module's own watchdog stop after a hard death by the next program that arms the module.</li>
  * </ol>
  * After a stop, the commanders of the actuator are owed a notice: the next command of each is refused and not
  * carried out ({@code ActuatorStoppedException}), so a program learns that it must command again. Every

@@ -88,7 +88,8 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
             guard = runtime.safety().guard(participant(), moduleName(), actuator);
             int watchdog = runtime.safety().watchdogMillis(participant(), moduleName(), defaultWatchdogMillis());
             SafeStates.armWatchdog(hardware, watchdog,
-                    detail -> runtime.safety().watchdogTripped(participant(), moduleName(), detail));
+                    detail -> runtime.safety().watchdogTripped(participant(), moduleName(), detail),
+                    detail -> runtime.safety().watchdogFoundTripped(participant(), moduleName(), detail));
         } else {
             runtime.safety().serves(participant(), moduleName());
         }

@@ -45,7 +45,8 @@ import robotworld.space.remote.SpaceUrls;
  *
  * <p><b>Safety</b> ({@link #safety()}, package {@code robotworld.safety}): the actuators this program serves are put
  * into their safe state when it ends ({@link #close()}, {@link #failed}, a JVM shutdown), when a remote commander of
- * theirs goes silent, when the space is lost, and on a stop request; the program sends a heartbeat into the space.
+ * theirs goes silent, when the space through which a remote commander drove them is lost, and on a stop request;
+ * the program sends a heartbeat into the space.
  *
  * <p>Thread-safe.
  */

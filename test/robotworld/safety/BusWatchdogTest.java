@@ -19,6 +19,8 @@ import robotworld.bus.MotorModuleProxy;
 import robotworld.bus.RS485Bus;
 import robotworld.bus.SerialSettings;
 import robotworld.sim.robot.SimModule;
+import robotworld.space.Capi;
+import robotworld.space.remote.RemoteSpace;
 import robotworld.xvsm.ActuatorStoppedException;
 import robotworld.xvsm.XVSMMotorModuleLocal;
 import robotworld.xvsm.XVSMRuntime;
@@ -117,6 +119,36 @@ class BusWatchdogTest {
             child.awaitExit(Duration.ofSeconds(30));
             eventually("the module stops by itself", rig::motorsStopped);
             assertTrue(rig.robot.module(1).watchdogTripped());
+        }
+    }
+
+    @Test
+    void aHardDeathIsRecordedByTheNextProgramThatArmsTheModuleSoMonitorsShowIt() throws Exception {
+        try (ChildProgram child = ChildProgram.start(temp, List.of("-Drwe.command.timeout.ms=60000"), SafetyChild.class,
+                "serve", "wait", rig.spaceUrl, rig.busPort)) {
+            child.awaitLine("READY", Duration.ofSeconds(60));
+            child.kill(); // nobody is left to read the tripped bit
+            child.awaitExit(Duration.ofSeconds(30));
+            eventually("the module stops by itself", () -> rig.robot.module(1).watchdogTripped());
+        }
+        List<StopRecord> shown = new java.util.concurrent.CopyOnWriteArrayList<>();
+        try (Capi monitorSpace = RemoteSpace.open(rig.space.uri());
+             StopWatcher monitor = StopWatcher.start(monitorSpace, shown::add);
+             XVSMRuntime runtime = XVSMRuntime.connect(rig.spaceUrl, "robot-pc")) {
+            RS485Bus bus = runtime.own(bus());
+            XVSMMotorModuleLocal motor = runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT,
+                    SafetyRig.MOTOR, new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
+            eventually("a monitor is shown the stop", () -> shown.stream()
+                    .anyMatch(stop -> stop.cause() == StopCause.WATCHDOG && stop.where().equals("SafetyBot/Motor")));
+            StopRecord stop = shown.stream().filter(s -> s.cause() == StopCause.WATCHDOG).findFirst().orElseThrow();
+            assertTrue(stop.reason().startsWith("stopped by its watchdog while no program fed it"), stop.toString());
+            assertTrue(stop.reason().contains(runtime.programId()), "who found it: " + stop);
+            assertEquals("its watchdog", stop.stoppedBy());
+            assertTrue(runtime.safety().recentStops().stream().anyMatch(s -> s.reason().equals(stop.reason())),
+                    "recorded by the program that found it: " + runtime.safety().recentStops());
+            assertFalse(rig.robot.module(1).watchdogTripped(), "armed again");
+            motor.setMotor(1, 0.3); // nobody is owed a notice: this program had commanded nothing
+            assertEquals(300, rig.motorSpeed(1));
         }
     }
 

@@ -18,6 +18,9 @@ import robotworld.bus.BusTiming;
 import robotworld.bus.MotorModuleProxy;
 import robotworld.bus.RS485Bus;
 import robotworld.bus.SerialSettings;
+import robotworld.bus.ServoModuleProxy;
+import robotworld.core.ServoModule;
+import robotworld.sim.robot.SimServoModule;
 import robotworld.space.Capi;
 import robotworld.space.Entry;
 import robotworld.space.Selector;
@@ -26,10 +29,12 @@ import robotworld.space.remote.RemoteSpace;
 import robotworld.xvsm.ActuatorStoppedException;
 import robotworld.xvsm.XVSMMotorModuleLocal;
 import robotworld.xvsm.XVSMRuntime;
+import robotworld.xvsm.XVSMServoModuleLocal;
 
 /**
  * Rule 1: however a program that serves actuators ends (normal return, uncaught exception, SIGTERM,
- * {@code System.exit}), its motors are at 0 afterwards, and the stop is logged and published.
+ * {@code System.exit}), its motors are at 0 afterwards, its servos hold (no new target is sent), and the stop is
+ * logged and published.
  */
 class CleanExitTest {
 
@@ -100,6 +105,45 @@ class CleanExitTest {
     }
 
     @Test
+    void aProgramThatEndsLeavesItsServoHoldingItsTargetAndSendsItNothing() throws Exception {
+        List<String> sent = new java.util.concurrent.CopyOnWriteArrayList<>();
+        try (Capi observer = RemoteSpace.open(rig.space.uri());
+             RS485Bus reader = bus()) {
+            XVSMRuntime runtime = XVSMRuntime.connect(rig.spaceUrl, "robot-pc");
+            RS485Bus bus = runtime.own(bus());
+            ServoModuleProxy hardware = new ServoModuleProxy(bus, 3, SafetyRig.SERVO);
+            // what reaches the module's hardware proxy, i.e. the bus
+            ServoModule recording = new ServoModule() {
+                @Override
+                public void setServo(int servoNr, int position) {
+                    sent.add("setServo " + servoNr + " " + position);
+                    hardware.setServo(servoNr, position);
+                }
+
+                @Override
+                public void setServoQuiet(int servoNr, int position) {
+                    sent.add("setServoQuiet " + servoNr + " " + position);
+                    hardware.setServoQuiet(servoNr, position);
+                }
+            };
+            XVSMServoModuleLocal servo = runtime.own(new XVSMServoModuleLocal(runtime, SafetyRig.ROBOT,
+                    SafetyRig.SERVO, recording));
+            servo.setServoQuiet(1, 0); // from 90 degrees at 90 degrees/s: under way for a second
+
+            runtime.close();
+
+            assertEquals(List.of("setServoQuiet 1 0"), sent, "ending sent the servo no new target");
+            StopRecord stop = stopRecords(observer, 1).get(0);
+            assertEquals(SafetyRig.SERVO, stop.module());
+            assertEquals(StopCause.PROGRAM_ENDED, stop.cause());
+            assertEquals(SafeStates.SERVOS_HOLD, stop.action());
+            assertEquals(0, reader.readHoldingRegisters(3, 0, 1)[0], "its target is still the one it was given");
+            eventually("the servo completes its move and holds there",
+                    () -> ((SimServoModule) rig.robot.module(3)).angle(1) == 0);
+        }
+    }
+
+    @Test
     void aProgramThatReturnsStopsItsMotors() throws Exception {
         childEndsAndMotorsAreStopped("return", 0);
     }
@@ -144,10 +188,14 @@ class CleanExitTest {
         }
     }
 
+    private RS485Bus bus() throws Exception {
+        return new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
+                BusTiming.defaults().withFrameGap(Duration.ZERO));
+    }
+
     private XVSMMotorModuleLocal serveMotor(XVSMRuntime runtime) throws Exception {
         SafetyRig.relax(runtime);
-        RS485Bus bus = runtime.own(new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
-                BusTiming.defaults().withFrameGap(Duration.ZERO)));
+        RS485Bus bus = runtime.own(bus());
         return runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.MOTOR,
                 new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
     }

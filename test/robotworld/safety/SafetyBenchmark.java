@@ -33,7 +33,8 @@ import robotworld.xvsm.XVSMRuntime;
  * <p>The module is polled every 0.1 ms from this JVM, which also causes each event (a call, a signal to a child
  * JVM, closing the space server), so both ends use the same clock. Paths: close of the runtime; failed(...) for an
  * uncaught exception; SIGTERM of the serving program (a child JVM); SIGKILL of it (the module's watchdog, 500 ms);
- * SIGKILL of a remote commander (command timeout 500 ms); the space server closed (command timeout 500 ms);
+ * SIGKILL of a remote commander (command timeout 500 ms); the space server closed while a remote commander drives
+ * the motor (command timeout 500 ms);
  * {@code rwe stop} from a third program (a {@link WorldStop} over its own connection). Arguments, or
  * {@code -Dbench.paths=a,b}, name the parts to run (close, exception, sigterm, sigkill, commander, space, stop, bus,
  * calls); none: all. Knobs: {@code bench.trials}, {@code bench.callRuns}, {@code bench.calls},
@@ -58,7 +59,9 @@ public final class SafetyBenchmark {
         void cause() throws Exception;
     }
 
-    private record Row(String path, String timeout, double p50, double max, int trials, String goal, boolean met) {
+    /** One path's figures; the goal is judged twice: on the p50 (the typical stop) and on the max (every trial). */
+    private record Row(String path, String timeout, double p50, double max, int trials, String goal, boolean p50Met,
+                       boolean maxMet) {
     }
 
     private static final List<Row> ROWS = new ArrayList<>();
@@ -165,10 +168,14 @@ public final class SafetyBenchmark {
     private static Event spaceTrial(SafetyRig rig) throws Exception {
         SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(0));
         XVSMRuntime runtime = XVSMRuntime.connect(server.uri().toString(), "robot-pc");
-        XVSMMotorModuleLocal motor = serveMotor(runtime, rig);
+        serveMotor(runtime, rig);
+        // commanded through the space: what only the serving program commands is not stopped for a lost space
+        XVSMRuntime laptop = XVSMRuntime.connect(server.uri().toString(), "laptop");
+        XVSMMotorModuleRemote motor = laptop.own(new XVSMMotorModuleRemote(laptop, SafetyRig.ROBOT, SafetyRig.MOTOR));
         motor.setMotor(1, 0.45);
         motor.setMotor(2, 0.45);
         Thread.sleep(300); // heartbeats under way
+        closeLater(laptop);
         closeLater(runtime);
         return server::close;
     }
@@ -233,7 +240,8 @@ public final class SafetyBenchmark {
         Collections.sort(millis);
         double p50 = percentile(millis, 50);
         double max = millis.get(millis.size() - 1);
-        ROWS.add(new Row(name, timeout, p50, max, millis.size(), "<= " + (int) goalMillis + " ms", max <= goalMillis));
+        ROWS.add(new Row(name, timeout, p50, max, millis.size(), "<= " + (int) goalMillis + " ms", p50 <= goalMillis,
+                max <= goalMillis));
         System.out.printf(Locale.ROOT, " p50 %.1f ms, max %.1f ms   (all: %s)%n", p50, max, format(millis));
     }
 
@@ -284,13 +292,14 @@ public final class SafetyBenchmark {
 
     private static void printTable() {
         System.out.println();
-        System.out.printf(Locale.ROOT, "| %-40s | %-16s | %6s | %8s | %8s | %-9s | %s |%n", "path", "timeout", "trials",
-                "p50 ms", "max ms", "goal", "met");
+        System.out.printf(Locale.ROOT, "| %-40s | %-16s | %6s | %8s | %8s | %-9s | %s | %s |%n", "path", "timeout",
+                "trials", "p50 ms", "max ms", "goal", "p50 met", "max met");
         System.out.println("|" + "-".repeat(42) + "|" + "-".repeat(18) + "|" + "-".repeat(8) + "|" + "-".repeat(10)
-                + "|" + "-".repeat(10) + "|" + "-".repeat(11) + "|-----|");
+                + "|" + "-".repeat(10) + "|" + "-".repeat(11) + "|---------|---------|");
         for (Row row : ROWS) {
-            System.out.printf(Locale.ROOT, "| %-40s | %-16s | %6d | %8.1f | %8.1f | %-9s | %s |%n", row.path(),
-                    row.timeout(), row.trials(), row.p50(), row.max(), row.goal(), row.met() ? "yes" : "NO");
+            System.out.printf(Locale.ROOT, "| %-40s | %-16s | %6d | %8.1f | %8.1f | %-9s | %-7s | %-7s |%n",
+                    row.path(), row.timeout(), row.trials(), row.p50(), row.max(), row.goal(),
+                    row.p50Met() ? "yes" : "NO", row.maxMet() ? "yes" : "NO");
         }
         System.out.println();
     }

@@ -22,6 +22,8 @@ import robotworld.xvsm.XVSMX10LampModuleLocal;
  * serve  return|throw|exit|wait  SPACE_URL BUS_PORT   the robot's program: serves SafetyBot/Motor and Bumper, sets
  *                                                     motors 1 and 2 to 0.45, prints READY, then returns, throws,
  *                                                     calls System.exit(3) or waits to be killed
+ * serve  winch  SPACE_URL BUS_PORT                    as wait, and serves SafetyBot/Winch too (address 4), which it
+ *                                                     does not command itself
  * room SPACE_URL X10_PORT                             the room's program: serves SafetyRoom/Lamp, switches it on,
  *                                                     prints READY, waits
  * command SPACE_URL SPEED [GO_FILE]                   a remote commander: sets motors 1 and 2 of SafetyBot/Motor
@@ -54,6 +56,10 @@ public final class SafetyChild {
                         SafetyRig.MOTOR, new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
                 runtime.own(new XVSMBumperModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.BUMPER,
                         new BumperModuleProxy(bus, 2, SafetyRig.BUMPER)));
+                if (mode.equals("winch")) {
+                    runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.WINCH,
+                            new MotorModuleProxy(bus, 4, SafetyRig.WINCH)));
+                }
                 motor.setMotor(1, 0.45);
                 motor.setMotor(2, 0.45);
                 System.out.println("READY " + runtime.programId());
@@ -64,7 +70,7 @@ public final class SafetyChild {
                     }
                     case "throw" -> throw new IllegalStateException("the control program failed on purpose");
                     case "exit" -> System.exit(3);
-                    case "wait" -> runtime.serveUntilStopped();
+                    case "wait", "winch" -> runtime.serveUntilStopped();
                     default -> throw new IllegalArgumentException("unknown mode " + mode);
                 }
             } catch (Throwable failure) {

@@ -14,7 +14,8 @@ import robotworld.space.server.SpaceServer;
 
 /**
  * A small world on loopback for the safety tests and benchmarks: a space server, a simulated robot "SafetyBot" (a
- * motor module at address 1 driving the wheels, a bumper at 2, a servo at 3, fast timing) and a simulated CM11A
+ * motor module at address 1 driving the wheels, a bumper at 2, a servo at 3, a second motor module "Winch" at 4 that
+ * drives no wheel, fast timing) and a simulated CM11A
  * with a lamp at A1. Programs under test run in this JVM or as {@link ChildProgram}s.
  */
 final class SafetyRig implements AutoCloseable {
@@ -23,6 +24,8 @@ final class SafetyRig implements AutoCloseable {
     static final String MOTOR = "Motor";
     static final String BUMPER = "Bumper";
     static final String SERVO = "Servo";
+    /** A second motor module (address 4, no wheels), for tests that need two actuators. */
+    static final String WINCH = "Winch";
     static final String ROOM = "SafetyRoom";
     static final String LAMP = "Lamp";
 
@@ -36,6 +39,7 @@ final class SafetyRig implements AutoCloseable {
                 <Mount number="4" angle="20" span="50"/>
               </Bumper>
               <Servo address="3" speed="90"/>
+              <Motor address="4" left="0" right="0" ramp="0"/>
             </SimulatedRobot>""";
 
     /**
@@ -92,6 +96,11 @@ final class SafetyRig implements AutoCloseable {
     /** The speed motor {@code motor} is set to at the simulated module, in per-mille. */
     int motorSpeed(int motor) {
         return ((SimMotorModule) robot.module(1)).setSpeed(motor);
+    }
+
+    /** The speed motor {@code motor} of the winch (address 4) is set to at the simulated module, in per-mille. */
+    int winchSpeed(int motor) {
+        return ((SimMotorModule) robot.module(4)).setSpeed(motor);
     }
 
     /** Whether both wheel motors are set to 0 at the simulated module. */

@@ -1,6 +1,7 @@
 package robotworld.safety;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robotworld.safety.SafetyRig.eventually;
 
@@ -13,17 +14,29 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robotworld.explorer.cli.Rwe;
 import robotworld.testsupport.TestPeers;
+import robotworld.xvsm.ActuatorStoppedException;
+import robotworld.xvsm.XVSMMotorModuleRemote;
+import robotworld.xvsm.XVSMRuntime;
 
 /**
  * Rule 4: a program that serves actuators and cannot reach its space for longer than the command timeout stops
- * them, and says so once in its log; whether the space server is gone (connections refused) or frozen (it accepts
- * and never answers).
+ * those that a program elsewhere commanded through the space (their commands went stale with it), and says so once
+ * in its log; whether the space server is gone (connections refused), killed with SIGKILL, or frozen (it accepts
+ * and never answers). What only the serving program itself commands keeps running: it was never commanded through
+ * the space, and that program's own end is what stops it (rules 1 and 2).
+ *
+ * <p>The serving program runs in a JVM of its own ({@code SafetyChild serve winch}): it drives the wheels (Motor)
+ * itself at 0.45 and serves the Winch, which this test commands through the space as a remote commander.
  */
 class SpaceLossTest {
 
     private static final Duration START = Duration.ofSeconds(60);
-    /** Not about the bus watchdog: a long one, so that only the lost space stops the motors. */
-    private static final List<String> NO_WATCHDOG = List.of("-Drwe.watchdog.ms.SafetyBot.Motor=10000");
+    /**
+     * Not about the bus watchdog: a long one, so that only the lost space stops a motor. A command timeout of 3 s
+     * (the rule's delay): a busy machine that holds a live commander's heartbeats back for half a second must not
+     * stop the winch for a silent commander (rule 3) before the space is gone.
+     */
+    private static final List<String> PROVIDER = List.of("-Drwe.watchdog.ms=10000", "-Drwe.command.timeout.ms=3000");
 
     @TempDir
     Path temp;
@@ -41,43 +54,90 @@ class SpaceLossTest {
     }
 
     @Test
-    void aProviderWhoseSpaceServerIsGoneStopsItsMotorsAndSaysSoOnce() throws Exception {
-        try (ChildProgram provider = ChildProgram.start(temp, NO_WATCHDOG, SafetyChild.class, "serve", "wait",
-                rig.spaceUrl, rig.busPort)) {
+    void aProviderWhoseSpaceServerIsGoneStopsWhatWasCommandedThroughItAndSaysSoOnce() throws Exception {
+        try (ChildProgram provider = ChildProgram.start(temp, PROVIDER, SafetyChild.class, "serve", "winch",
+                rig.spaceUrl, rig.busPort);
+             XVSMRuntime laptop = XVSMRuntime.connect(rig.spaceUrl, "laptop")) {
             provider.awaitLine("READY", START);
+            XVSMMotorModuleRemote winch = winch(laptop);
+            winch.setMotor(1, 0.3);
+            assertEquals(300, rig.winchSpeed(1));
             assertEquals(450, rig.motorSpeed(1));
             rig.space.close();
-            eventually("the motors stop", rig::motorsStopped);
-            Thread.sleep(2_000); // the outage goes on: nothing more to say
+            eventually("the winch, commanded through the space, stops", () -> rig.winchSpeed(1) == 0);
+            Thread.sleep(2_000); // the outage goes on: nothing more to say, nothing more to stop
             String output = provider.output();
             assertEquals(1, count(output, "cannot reach its space"), output);
-            assertTrue(output.contains("(space-lost: no contact with the space"), output);
+            assertTrue(output.contains("Winch stopped") && output.contains("(space-lost: no contact with the space"),
+                    output);
             assertTrue(provider.isAlive(), "it keeps serving, waiting for its space");
-            assertTrue(rig.motorsStopped());
+            assertEquals(0, rig.winchSpeed(1));
+            assertEquals(450, rig.motorSpeed(1), "the wheels its own program drives were never commanded through the"
+                    + " space: they keep running\n" + output);
+            assertEquals(450, rig.motorSpeed(2));
         }
     }
 
     @Test
-    void aProviderWhoseSpaceServerFreezesStopsItsMotorsAndResumesQuietly() throws Exception {
+    void aProviderWhoseSpaceServerProcessIsKilledStopsWhatARemoteCommanderDrove() throws Exception {
         TestPeers.requireCommand("kill", "procps");
-        try (ChildProgram space = ChildProgram.start(temp, List.of(), Rwe.class, "space", "--port", "0")) {
-            space.awaitLine("space server listening on ", START);
-            String url = space.output().lines().filter(l -> l.startsWith("space server listening on ")).findFirst()
-                    .orElseThrow().substring("space server listening on ".length()).split(" ")[0];
-            try (ChildProgram provider = ChildProgram.start(temp, NO_WATCHDOG, SafetyChild.class, "serve", "wait",
-                    url, rig.busPort)) {
-                provider.awaitLine("READY", START);
-                assertEquals(450, rig.motorSpeed(1));
-                signal("STOP", space.pid()); // accepts connections, never answers
-                eventually("the motors stop", rig::motorsStopped);
-                signal("CONT", space.pid());
-                eventually("it says it reaches the space again",
-                        () -> provider.output().contains("reaches its space"));
-                String output = provider.output();
-                assertEquals(1, count(output, "cannot reach its space"), output);
-                assertTrue(rig.motorsStopped(), "stopped actuators stay stopped until commanded again");
-            }
+        try (ChildProgram space = spaceServer();
+             ChildProgram provider = ChildProgram.start(temp, PROVIDER, SafetyChild.class, "serve", "winch",
+                     url(space), rig.busPort);
+             XVSMRuntime laptop = XVSMRuntime.connect(url(space), "laptop")) {
+            provider.awaitLine("READY", START);
+            winch(laptop).setMotor(1, -0.6);
+            assertEquals(-600, rig.winchSpeed(1));
+            signal("KILL", space.pid()); // no goodbye: its connections just break
+            space.awaitExit(START);
+            eventually("the winch stops", () -> rig.winchSpeed(1) == 0);
+            eventually("its log says why", () -> provider.output().contains("(space-lost: no contact with the space"));
+            String output = provider.output();
+            assertEquals(450, rig.motorSpeed(1), "what its own program drives keeps running\n" + output);
         }
+    }
+
+    @Test
+    void aProviderWhoseSpaceServerFreezesStopsWhatWasCommandedThroughItAndResumesQuietly() throws Exception {
+        TestPeers.requireCommand("kill", "procps");
+        try (ChildProgram space = spaceServer();
+             ChildProgram provider = ChildProgram.start(temp, PROVIDER, SafetyChild.class, "serve", "winch",
+                     url(space), rig.busPort);
+             XVSMRuntime laptop = XVSMRuntime.connect(url(space), "laptop")) {
+            provider.awaitLine("READY", START);
+            XVSMMotorModuleRemote winch = winch(laptop);
+            winch.setMotor(1, 0.3);
+            assertEquals(300, rig.winchSpeed(1));
+            signal("STOP", space.pid()); // accepts connections, never answers
+            eventually("the winch stops", () -> rig.winchSpeed(1) == 0);
+            signal("CONT", space.pid());
+            eventually("it says it reaches the space again", () -> provider.output().contains("reaches its space"));
+            String output = provider.output();
+            assertEquals(1, count(output, "cannot reach its space"), output);
+            assertEquals(0, rig.winchSpeed(1), "stopped actuators stay stopped until commanded again");
+            assertEquals(450, rig.motorSpeed(1), "what its own program drives kept running\n" + output);
+            assertThrows(ActuatorStoppedException.class, () -> winch.setMotor(1, 0.3),
+                    "the remote commander is told on its next call");
+            winch.setMotor(1, 0.3);
+            assertEquals(300, rig.winchSpeed(1), "and obeyed on the call after it");
+        }
+    }
+
+    private ChildProgram spaceServer() throws Exception {
+        ChildProgram space = ChildProgram.start(temp, List.of(), Rwe.class, "space", "--port", "0");
+        space.awaitLine("space server listening on ", START);
+        return space;
+    }
+
+    private static String url(ChildProgram space) {
+        return space.output().lines().filter(l -> l.startsWith("space server listening on ")).findFirst()
+                .orElseThrow().substring("space server listening on ".length()).split(" ")[0];
+    }
+
+    private static XVSMMotorModuleRemote winch(XVSMRuntime laptop) {
+        XVSMMotorModuleRemote winch = laptop.own(new XVSMMotorModuleRemote(laptop, SafetyRig.ROBOT, SafetyRig.WINCH));
+        winch.setCallTimeout(Duration.ofSeconds(30));
+        return winch;
     }
 
     private static int count(String text, String part) {

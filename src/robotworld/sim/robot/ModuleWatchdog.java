@@ -28,14 +28,21 @@ final class ModuleWatchdog {
         lastFrameNanos += nanos;
     }
 
-    /** Whether the timeout has run out now; trips (once per silence) and returns true when it just did. */
-    boolean expires(long nanos) {
-        if (timeoutMillis == 0 || tripped || nanos - lastFrameNanos < timeoutMillis * 1_000_000L) {
-            return false;
-        }
+    /**
+     * Whether the timeout has run out now and the watchdog has not tripped for this silence yet: the module must go
+     * to its safe state, then {@link #trip()}.
+     */
+    boolean expired(long nanos) {
+        return timeoutMillis != 0 && !tripped && nanos - lastFrameNanos >= timeoutMillis * 1_000_000L;
+    }
+
+    /**
+     * Sets the tripped bit, once the module is in its safe state: as on a real drive, whoever reads the bit set
+     * (the master, a monitor, a test) finds the module already stopped.
+     */
+    void trip() {
         tripped = true;
         trips++;
-        return true;
     }
 
     /**

@@ -143,8 +143,9 @@ public final class Simulation implements AutoCloseable {
      */
     public synchronized void checkWatchdogs(long nanos) {
         for (SimModule module : modules.values()) {
-            if (module.watchdog().expires(nanos)) {
-                module.enterSafeState();
+            if (module.watchdog().expired(nanos)) {
+                module.enterSafeState(); // first: the tripped bit must never be read before the module is stopped
+                module.watchdog().trip();
             }
         }
     }

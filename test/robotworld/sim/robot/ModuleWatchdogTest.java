@@ -75,6 +75,30 @@ class ModuleWatchdogTest {
     }
 
     @Test
+    void theTrippedBitIsSetOnlyOnceTheModuleIsInItsSafeState() {
+        // a reader of the bit (the master, a monitor) must never find it set while the module still runs
+        List<Boolean> trippedWhileStopping = new java.util.ArrayList<>();
+        SimModule module = new SimModule(5, IDENTITY, new ModuleFaults(5)) {
+            @Override
+            void enterSafeState() {
+                trippedWhileStopping.add(watchdogTripped());
+            }
+
+            @Override
+            public String moduleClass() {
+                return "TestModule";
+            }
+        };
+        Simulation own = new Simulation(world, List.of(module), 1);
+        own.respond(module, HexFormat.of().parseHex("0601000064")); // 100 ms
+        own.checkWatchdogs(System.nanoTime() + 200 * MS);
+        assertEquals(List.of(false), trippedWhileStopping, "stopped first, then the bit set");
+        assertTrue(module.watchdogTripped());
+        own.checkWatchdogs(System.nanoTime() + 400 * MS);
+        assertEquals(1, module.watchdogTrips(), "once per silence");
+    }
+
+    @Test
     void aServoHoldsWhenItsWatchdogTrips() {
         ask(servo, "06 01 00 00 64");
         ask(servo, "06 00 00 00 2D"); // 45 degrees
