@@ -30,6 +30,11 @@ final class ChildProgram implements AutoCloseable {
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.add("-Xmx128m");
         command.add("-XX:TieredStopAtLevel=1");
+        if (properties.stream().noneMatch(p -> p.startsWith("-D" + robotworld.bus.BusTiming.RESPONSE_TIMEOUT_PROPERTY))) {
+            // no safety test is about a module's reply time: a child starved of CPU on a busy machine must not fail
+            // its first bus call after 3 x 100 ms
+            command.add("-D" + robotworld.bus.BusTiming.RESPONSE_TIMEOUT_PROPERTY + "=2000");
+        }
         command.addAll(properties);
         command.add("-cp");
         command.add(System.getProperty("java.class.path"));
