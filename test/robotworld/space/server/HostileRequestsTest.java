@@ -112,6 +112,9 @@ class HostileRequestsTest {
                     new Refused("headers too large", 431, "GET " + path + " HTTP/1.1\r\nX-Filler: "
                             + "h".repeat(40_000) + "\r\n"),
                     new Refused("unsupported HTTP version", 505, "GET " + path + " HTTP/3.0\r\n"),
+                    new Refused("HTTP/2 preface on an HTTP/1.1 port", 426, "PRI * HTTP/2.0\r\n"),
+                    new Refused("headers too large on a PUT", 431, "PUT " + path + " HTTP/1.1\r\nX-Filler: "
+                            + "h".repeat(40_000) + "\r\n"),
                     new Refused("body ends before its length", 400, "POST " + path + "/lookup HTTP/1.1\r\n"
                             + "Content-Type: application/json\r\nContent-Length: 400\r\n"));
             for (Refused refused : cases) {
