@@ -173,6 +173,15 @@ class HostileRequestsTest {
                 assertTrue(third.head().contains("Retry-After"), third.head());
                 // a try-once operation needs no waiting slot
                 client.write(empty, Timeout.TRY_ONCE, Entry.of(1));
+                // nor does a take that may wait but can complete at once (a provider taking the next request
+                // while every place is held by callers waiting for answers)
+                ContainerRef full = client.createContainer(ContainerSpec.of(Order.FIFO));
+                client.write(full, Timeout.TRY_ONCE, Entry.of("ready"));
+                String ready = "{\"container\":{\"cref\":\"" + full.id() + "\",\"space\":\"" + full.space()
+                        + "\"},\"timeout\":10000}";
+                RawHttp.Answer served = RawHttp.post(server.uri(), "/take", JSON, ready);
+                assertEquals(200, served.status(), served.body());
+                assertTrue(served.body().contains("ready"), served.body());
             } finally {
                 for (java.net.Socket socket : waiting) {
                     socket.close();
