@@ -45,6 +45,14 @@ final class RtuMaster {
     static final int LATE_REPLY_TIMEOUTS = 4;
 
     /**
+     * Calls in a row that timed out without a single byte on the line, after which a {@code tcp://} link is opened
+     * again before the next request: a connection can go silent without closing (a bridge that hung or crashed, a
+     * connection a network device dropped), and only a new connection finds out. Silence from one absent module among
+     * answering ones never adds up to this; a scan's silences do not count.
+     */
+    static final int SILENT_CALLS_BEFORE_REOPEN = 3;
+
+    /**
      * How one call is made.
      *
      * @param replyTimeout how long the reply may take to start, counted from the end of the request on the wire
@@ -108,6 +116,17 @@ final class RtuMaster {
     private long lineQuietSince = System.nanoTime();
     private Pending pending;
     private boolean linkBroken;
+    /** Bytes read from the link so far (any: replies, strays, noise, echoes). */
+    private long bytesHeard;
+    /** Calls in a row that timed out with no byte heard (see {@link #SILENT_CALLS_BEFORE_REOPEN}). */
+    private int silentCalls;
+    /** Whether the link was opened again for silence and has not been heard since (said once in the log). */
+    private boolean reopenedForSilence;
+    /**
+     * Whether a silent line is opened again: a {@code tcp://} link by default, whose connection may have died
+     * without closing; on a local serial port silence means the modules are quiet, and reopening changes nothing.
+     */
+    private boolean reopenForSilence;
     /** During a call: a frame from an address that owes nothing, answering our request (see readReply). */
     private RtuFrame suspect;
     /** When the first byte of the frame being read came, and in how many reads it has come so far. */
@@ -128,6 +147,12 @@ final class RtuMaster {
         this.describe = describe;
         this.echo = new EchoCanceller(link.portName());
         this.pacing = new ReplyPacing(timing.characterNanos());
+        this.reopenForSilence = link instanceof TcpSerialLink;
+    }
+
+    /** Whether a line silent for {@value #SILENT_CALLS_BEFORE_REOPEN} calls is opened again (tests of other links). */
+    synchronized void reopenForSilence(boolean on) {
+        reopenForSilence = on;
     }
 
     /** How fast replies arrive on this line, for a hint when the modules talk at another baud rate. */
@@ -186,6 +211,7 @@ final class RtuMaster {
         Reply last = null;
         int unanswered = 0;
         long lastUnansweredSent = 0;
+        long heardBefore = bytesHeard;
         try {
             for (int attempt = 1; attempt <= policy.attempts(); attempt++) {
                 if (attempt > 1) {
@@ -221,7 +247,44 @@ final class RtuMaster {
         } finally {
             // n requests, at most one reply taken per answered attempt: one still owed per unanswered attempt
             owe(address, pdu, unanswered, lastUnansweredSent);
+            noteSilence(heardBefore, unanswered > 0 && policy.retryTimeouts());
         }
+    }
+
+    /**
+     * Counts calls that timed out in a silence nothing broke: after {@value #SILENT_CALLS_BEFORE_REOPEN} of them
+     * in a row the link is opened again before the next request. Any byte heard ends the count.
+     */
+    private void noteSilence(long heardBefore, boolean timedOut) {
+        if (bytesHeard != heardBefore) {
+            silentCalls = 0;
+            if (reopenedForSilence) {
+                reopenedForSilence = false;
+                LOG.info("{}: the line answers again", link.portName());
+            }
+            return;
+        }
+        if (!reopenForSilence || !timedOut || ++silentCalls < SILENT_CALLS_BEFORE_REOPEN) {
+            return;
+        }
+        silentCalls = 0;
+        linkBroken = true; // the next request opens the link again
+        if (!reopenedForSilence) {
+            reopenedForSilence = true;
+            LOG.info("{}: no byte on the line in {} calls in a row; opening the link again (and after every {}"
+                    + " more silent calls)", link.portName(), SILENT_CALLS_BEFORE_REOPEN, SILENT_CALLS_BEFORE_REOPEN);
+        } else {
+            LOG.debug("{}: still silent; opening the link again", link.portName());
+        }
+    }
+
+    /** Reads from the link, counting what was heard. */
+    private int read(byte[] into, int offset, int length, Duration wait) throws IOException {
+        int n = link.read(into, offset, length, wait);
+        if (n > 0) {
+            bytesHeard += n;
+        }
+        return n;
     }
 
     /**
@@ -333,7 +396,7 @@ final class RtuMaster {
                     }
                 }
                 Duration readFor = wait <= 0 ? Duration.ZERO : millisAtLeastOne(wait);
-                int n = link.read(buffer, have, buffer.length - have, readFor);
+                int n = read(buffer, have, buffer.length - have, readFor);
                 looked = true;
                 if (n > 0) {
                     if (have == 0) {
@@ -489,7 +552,7 @@ final class RtuMaster {
         byte[] scratch = new byte[RtuFrame.MAX_LENGTH];
         int n;
         while (System.nanoTime() < giveUp
-                && (n = link.read(scratch, 0, scratch.length, millisAtLeastOne(interByteNanos))) > 0) {
+                && (n = read(scratch, 0, scratch.length, millisAtLeastOne(interByteNanos))) > 0) {
             int keep = Math.min(n, buffer.length - total);
             System.arraycopy(scratch, 0, buffer, total, keep);
             total += keep;
@@ -632,7 +695,7 @@ final class RtuMaster {
         int have = 0;
         long giveUp = System.nanoTime() + MAX_RESYNC_NANOS;
         while (have < buffer.length && System.nanoTime() < giveUp) {
-            int n = link.read(buffer, have, buffer.length - have, millisAtLeastOne(interByteNanos));
+            int n = read(buffer, have, buffer.length - have, millisAtLeastOne(interByteNanos));
             if (n <= 0) {
                 break; // silence: the frame, if it is one, is complete
             }
@@ -657,7 +720,7 @@ final class RtuMaster {
         byte[] scratch = new byte[RtuFrame.MAX_LENGTH];
         long giveUp = System.nanoTime() + MAX_RESYNC_NANOS;
         while (System.nanoTime() < giveUp
-                && link.read(scratch, 0, scratch.length, millisAtLeastOne(interByteNanos)) > 0) {
+                && read(scratch, 0, scratch.length, millisAtLeastOne(interByteNanos)) > 0) {
             lineQuietSince = System.nanoTime();
         }
     }

@@ -38,6 +38,9 @@ final class ThreadPerTake implements AsyncTakes {
                 entries = take.get();
             } catch (SpaceException e) {
                 failure = e;
+            } catch (RuntimeException e) {
+                // not a failure the space names (a bug in a Capi): still an outcome, or the waiter would never hear
+                failure = new SpaceException("the take failed: " + e, e);
             }
             if (cancelling.get() && failure instanceof SpaceInterruptedException) {
                 return; // withdrawn: an interrupted take had no effect

@@ -26,8 +26,8 @@ import robotworld.space.Timeout;
  * for the next request in the same exchange ({@link AsyncTakes#shiftThenTakeLater}). So a program serving a
  * thousand modules has a few threads, not a thousand, and the threads it has are the ones doing hardware calls.
  *
- * <p>Space failures are retried with a growing pause; serving only ends on {@link #stop}, or when the space is
- * closed. Stopping is clean: a waiting take is withdrawn (nothing it took is lost), and a request that was taken is
+ * <p>Space failures, and any other exception met while serving, are retried with a growing pause (said once in
+ * the log); serving only ends on {@link #stop}, when the space is closed, or on a {@link VirtualMachineError}. Stopping is clean: a waiting take is withdrawn (nothing it took is lost), and a request that was taken is
  * always answered before the server ends.
  *
  * <p>A space connection that cannot wait without a thread (another {@code Capi}) is served the same way, with
@@ -232,6 +232,12 @@ final class RequestServer {
             LOG.error("{}: serving failed for good; the module is no longer served", name, fatal);
             end();
             throw fatal;
+        } catch (RuntimeException bug) {
+            // requests that cannot be answered (a failure of this runtime, not of the space): their callers time
+            // out, and the module goes on being served, after a pause, like after a failure of the space
+            worker = null;
+            failed(bug, null);
+            return;
         } finally {
             worker = null;
         }
@@ -244,6 +250,18 @@ final class RequestServer {
      * keys that is harmless (a second shift displaces the first, or leaves an answer its caller already has).
      */
     private void failed(RuntimeException failure, List<Item> undelivered) {
+        try {
+            retryLater(failure, undelivered);
+        } catch (RuntimeException alsoFailed) {
+            // whatever the clean-up met, the module is not left unserved
+            LOG.warn("{}: recovering from a failure failed too ({}); trying again in {} ms", name, alsoFailed,
+                    LONGEST_PAUSE_MILLIS, alsoFailed);
+            pause = LONGEST_PAUSE_MILLIS;
+            ServingThreads.schedule(() -> serve(null), LONGEST_PAUSE_MILLIS);
+        }
+    }
+
+    private void retryLater(RuntimeException failure, List<Item> undelivered) {
         if (failure instanceof SpaceClosedException || isStopping() && failure instanceof SpaceException) {
             if (undelivered != null) {
                 shift(undelivered);
@@ -261,9 +279,13 @@ final class RequestServer {
         if (undelivered != null) {
             shift(undelivered);
         }
-        if (pause == 0) {
+        if (pause == 0 && failure instanceof SpaceException) {
             LOG.warn("{}: cannot serve requests ({}); trying again with growing pauses up to {} ms", name,
                     failure.toString(), LONGEST_PAUSE_MILLIS);
+        } else if (pause == 0) {
+            // not the space: a fault of this program, with the trace to find it
+            LOG.warn("{}: serving failed ({}); requests taken may go unanswered; trying again with growing pauses"
+                    + " up to {} ms", name, failure.toString(), LONGEST_PAUSE_MILLIS, failure);
         } else {
             LOG.debug("{}: still cannot serve requests ({})", name, failure.toString());
         }

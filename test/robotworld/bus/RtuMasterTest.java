@@ -98,6 +98,42 @@ class RtuMasterTest {
     }
 
     @Test
+    void aLineSilentForSeveralCallsIsOpenedAgainButOneAbsentModuleIsNot() {
+        // only address 2 answers: calls to an absent address 7 between answered ones never reopen the link
+        ScriptedBusLink link = new ScriptedBusLink(request -> request[0] == 2
+                ? List.of(frame(2, BUMPERS_REPLY)) : List.of());
+        RtuMaster master = master(link);
+        master.reopenForSilence(true); // as for a tcp:// link
+        RtuMaster.CallPolicy once = new RtuMaster.CallPolicy(Duration.ofMillis(5), 1, true);
+        for (int i = 0; i < 2 * RtuMaster.SILENT_CALLS_BEFORE_REOPEN; i++) {
+            assertThrows(BusTimeoutException.class, () -> master.call(7, READ_BUMPERS, once));
+            assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, once));
+        }
+        assertEquals(1, link.opens(), "a line that answers is not opened again");
+
+        // the whole line falls silent: after SILENT_CALLS_BEFORE_REOPEN calls it is opened again
+        link.respondWith(request -> List.of());
+        for (int i = 0; i < RtuMaster.SILENT_CALLS_BEFORE_REOPEN; i++) {
+            assertThrows(BusTimeoutException.class, () -> master.call(2, READ_BUMPERS, once));
+        }
+        assertEquals(1, link.opens(), "not before the next request");
+        link.respondWith(request -> List.of(frame(2, BUMPERS_REPLY)));
+        assertArrayEquals(BUMPERS_REPLY, master.call(2, READ_BUMPERS, POLICY));
+        assertEquals(2, link.opens());
+
+        // a scan's silences do not count
+        link.respondWith(request -> List.of());
+        RtuMaster.CallPolicy scan = new RtuMaster.CallPolicy(Duration.ofMillis(5), 1, false);
+        for (int address = 10; address < 10 + 2 * RtuMaster.SILENT_CALLS_BEFORE_REOPEN; address++) {
+            int asked = address;
+            assertThrows(BusTimeoutException.class, () -> master.call(asked, READ_BUMPERS, scan));
+        }
+        link.respondWith(request -> List.of(frame(request[0], BUMPERS_REPLY)));
+        assertArrayEquals(BUMPERS_REPLY, master.call(30, READ_BUMPERS, POLICY));
+        assertEquals(2, link.opens());
+    }
+
+    @Test
     void aScanDoesNotRetrySilence() {
         ScriptedBusLink link = new ScriptedBusLink(request -> List.of());
         RtuMaster master = master(link);

@@ -43,6 +43,24 @@ final class SpaceCommand implements Callable<Integer> {
                     + " (default: the token of RWE_SPACE_TOKEN or RWE_SPACE_TOKEN_FILE, if set)")
     private Path tokenFile;
 
+    @Option(names = "--max-connections-per-client", paramLabel = "N",
+            defaultValue = "" + SpaceServer.Options.DEFAULT_PER_CLIENT,
+            description = "most open connections from one address; a client with the token is not limited"
+                    + " (default: ${DEFAULT-VALUE})")
+    private int maxConnectionsPerClient;
+
+    @Option(names = "--max-waiting-per-client", paramLabel = "N",
+            defaultValue = "" + SpaceServer.Options.DEFAULT_PER_CLIENT,
+            description = "most operations waiting at once from one address; a client with the token is not"
+                    + " limited (default: ${DEFAULT-VALUE})")
+    private int maxWaitingPerClient;
+
+    @Option(names = "--request-read-ms", paramLabel = "MS",
+            defaultValue = "" + SpaceServer.Options.DEFAULT_REQUEST_READ_MILLIS,
+            description = "how long a request may take to arrive, from its first byte, before its connection is"
+                    + " closed (default: ${DEFAULT-VALUE})")
+    private long requestReadMillis;
+
     @Option(names = "--cluster", paramLabel = "NAME",
             description = "be a member of the clustered space of cluster NAME (letters, digits, . _ -)")
     private String cluster;
@@ -72,7 +90,16 @@ final class SpaceCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         PrintWriter out = spec.commandLine().getOut();
-        SpaceServer.Options options = SpaceServer.Options.defaults().port(port).bindAddress(bind);
+        SpaceServer.Options options;
+        try {
+            options = SpaceServer.Options.defaults().port(port).bindAddress(bind)
+                    .maxConnectionsPerClient(maxConnectionsPerClient).maxWaitingPerClient(maxWaitingPerClient)
+                    .requestReadMillis(requestReadMillis);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage()
+                    + " (--max-connections-per-client and --max-waiting-per-client at least 1,"
+                    + " --request-read-ms at least 10)");
+        }
         String token = tokenFile != null ? TokenFile.read(tokenFile) : RuntimeSettings.fromSystem().spaceToken();
         if (token != null) {
             options = options.token(token);

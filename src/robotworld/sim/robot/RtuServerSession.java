@@ -37,6 +37,8 @@ final class RtuServerSession implements Runnable {
     private final AtomicLong requests = new AtomicLong();
     private final byte[] buffer = new byte[2 * RtuFrame.MAX_LENGTH];
     private volatile boolean closed;
+    /** Fault: requests are read and never answered, the link stays open. */
+    private volatile boolean hung;
 
     RtuServerSession(SerialLink link, Simulation simulation, RtuTiming rtu, LineTiming timing) {
         this(link, simulation, rtu, timing, () -> false);
@@ -111,7 +113,19 @@ final class RtuServerSession implements Runnable {
         }
     }
 
+    /** Fault injection: from now on nothing is answered on this link (not even echoed), which stays open. */
+    void hang() {
+        hung = true;
+    }
+
+    boolean isClosed() {
+        return closed;
+    }
+
     private void serve(byte[] frame, long firstByteAt, long lastByteAt) throws IOException {
+        if (hung) {
+            return;
+        }
         if (echoRequests.getAsBoolean()) {
             link.write(frame); // the master's adapter hears its own request
         }

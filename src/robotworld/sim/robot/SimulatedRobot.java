@@ -27,6 +27,8 @@ public final class SimulatedRobot implements AutoCloseable {
     private final Simulation simulation;
     private final RtuTiming rtu;
     private final List<AutoCloseable> endpoints = new ArrayList<>();
+    /** The sessions serving links now (closed ones are dropped from time to time). */
+    private final java.util.Set<RtuServerSession> sessions = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private volatile boolean echoRequests;
 
     private SimulatedRobot(SimRobotConfig config) {
@@ -103,7 +105,20 @@ public final class SimulatedRobot implements AutoCloseable {
     }
 
     private RtuServerSession session(SerialLink link) {
-        return new RtuServerSession(link, simulation, rtu, config.timing(), () -> echoRequests);
+        RtuServerSession session = new RtuServerSession(link, simulation, rtu, config.timing(), () -> echoRequests);
+        sessions.removeIf(RtuServerSession::isClosed);
+        sessions.add(session);
+        return session;
+    }
+
+    /**
+     * Fault injection: every link served now goes silent without closing (requests are read and never answered),
+     * as when the far end of a TCP connection or a serial adapter hangs; links opened afterwards are served as
+     * usual. Unlike a module's {@link ModuleFaults#silent silence}, only a new connection gets answers again.
+     */
+    public void hangOpenLinks() {
+        sessions.removeIf(RtuServerSession::isClosed);
+        sessions.forEach(RtuServerSession::hang);
     }
 
     /**

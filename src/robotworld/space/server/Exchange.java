@@ -2,6 +2,7 @@ package robotworld.space.server;
 
 import java.io.ByteArrayOutputStream;
 import java.io.UncheckedIOException;
+import java.net.InetAddress;
 import java.lang.System.Logger.Level;
 import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -31,11 +32,19 @@ final class Exchange {
     private final Callback callback;
     private final WireContext wire;
     private final AtomicBoolean answered = new AtomicBoolean();
+    /** The address whose waiting places this request uses, or null (a request with the token). */
+    private final InetAddress client;
 
-    Exchange(Response response, Callback callback, WireContext wire) {
+    Exchange(Response response, Callback callback, WireContext wire, InetAddress client) {
         this.response = response;
         this.callback = callback;
         this.wire = wire;
+        this.client = client;
+    }
+
+    /** The address whose waiting places this request uses, or null if it is not limited per address. */
+    InetAddress client() {
+        return client;
     }
 
     /** A new answer body, its object already opened. */

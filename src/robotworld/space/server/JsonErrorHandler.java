@@ -18,7 +18,8 @@ import robotworld.space.wire.WireWriter;
 
 /**
  * Errors Jetty answers itself, before a request reaches the space (a malformed request line, headers too large,
- * an unsupported HTTP version, a body that ends early): the same JSON error body as every other failure,
+ * an unsupported HTTP version, an HTTP/2 preface (426), a body that ends early), whatever the request's method:
+ * the same JSON error body as every other failure,
  * {@code {"error": kind, "message": text}}, with Jetty's status, instead of Jetty's HTML page.
  */
 final class JsonErrorHandler extends ErrorHandler {
@@ -29,6 +30,12 @@ final class JsonErrorHandler extends ErrorHandler {
 
     JsonErrorHandler(WireContext wire) {
         this.wire = wire;
+    }
+
+    /** Every method gets its error body (Jetty's default writes none for others than GET, POST and HEAD). */
+    @Override
+    public boolean errorPageForMethod(String method) {
+        return true;
     }
 
     @Override

@@ -52,6 +52,13 @@ final class OperationsHandler extends Handler.Wrapper {
 
     @Override
     public boolean handle(Request request, Response response, Callback callback) throws Exception {
+        String refused = state.clients.arrived(request);
+        if (refused != null) {
+            Exchange exchange = new Exchange(response, callback, state.wire, null);
+            exchange.header(HttpHeader.CONNECTION, "close");
+            exchange.fail(WireError.BUSY, refused, false);
+            return true;
+        }
         String path = request.getHttpURI().getPath();
         if (path == null || !path.startsWith(prefix) || path.equals(eventsPath) || path.length() == prefix.length()) {
             // the servlet may block (the notification stream does): never on this thread
@@ -77,7 +84,7 @@ final class OperationsHandler extends Handler.Wrapper {
 
     /** Runs one operation request; answers it (at once, or later from the thread that completes it). */
     private void operate(String path, Request request, Response response, Callback callback) {
-        Exchange exchange = new Exchange(response, callback, state.wire);
+        Exchange exchange = new Exchange(response, callback, state.wire, state.clients.waitingClient(request));
         try {
             if (state.token != null && !state.token.accepts(request.getHeaders().get(HttpHeader.AUTHORIZATION))) {
                 exchange.header(HttpHeader.WWW_AUTHENTICATE, "Bearer realm=\"space\"");

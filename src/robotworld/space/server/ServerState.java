@@ -1,5 +1,6 @@
 package robotworld.space.server;
 
+import java.net.InetAddress;
 import java.net.URI;
 import java.util.concurrent.Semaphore;
 
@@ -23,10 +24,13 @@ final class ServerState {
     final CallRegistry calls;
     final SessionRegistry sessions;
     /** Bounds the calls that wait inside the space at once (each holds a small object, not a thread). */
-    final Semaphore waitingPermits;
+    private final Semaphore waitingPermits;
+    /** Per-client limits: connections and waiting operations per address, the request deadline. */
+    final ClientLimits clients;
     volatile boolean stopping;
 
-    ServerState(SpaceEngine space, URI publicUri, WireContext wire, SpaceServer.Options options) {
+    ServerState(SpaceEngine space, URI publicUri, WireContext wire, SpaceServer.Options options,
+                ClientLimits clients) {
         this.space = space;
         this.publicUri = publicUri;
         this.crefUri = space.sharedUri() ? space.spaceUri() : publicUri;
@@ -37,5 +41,29 @@ final class ServerState {
         this.calls = new CallRegistry(receipts);
         this.sessions = new SessionRegistry(options.maxSessions(), options.sessionQueue());
         this.waitingPermits = new Semaphore(options.maxWaitingCalls());
+        this.clients = clients;
+    }
+
+    /**
+     * Takes a place for an operation that waits in the space: one of the server's, and one of its client's address
+     * unless {@code client} is null (a request with the token).
+     *
+     * @return null if it got one, else why not (for the {@code busy} answer)
+     */
+    String enterWaiting(InetAddress client) {
+        if (!waitingPermits.tryAcquire()) {
+            return "too many operations are waiting on this server; try again";
+        }
+        if (!clients.enterWaiting(client)) {
+            waitingPermits.release();
+            return clients.waitingRefusal(client);
+        }
+        return null;
+    }
+
+    /** Gives back a place taken with {@link #enterWaiting}. */
+    void leaveWaiting(InetAddress client) {
+        clients.leaveWaiting(client);
+        waitingPermits.release();
     }
 }

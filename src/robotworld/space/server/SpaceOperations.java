@@ -1,5 +1,6 @@
 package robotworld.space.server;
 
+import java.net.InetAddress;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
@@ -159,16 +160,18 @@ final class SpaceOperations {
             });
             return;
         }
-        if (!state.waitingPermits.tryAcquire()) {
-            tryOnceOrBusy(operation, in, exchange, step);
+        InetAddress client = exchange.client();
+        String noPlace = state.enterWaiting(client);
+        if (noPlace != null) {
+            tryOnceOrBusy(operation, in, exchange, step, noPlace);
             return;
         }
-        WaitingCall waiting = new WaitingCall(operation, split, step);
+        WaitingCall waiting = new WaitingCall(operation, split, step, client);
         // calls without an id are registered too, so that a stopping server can end their wait
         CallRegistry.InFlight call = state.calls.begin(in.call != null ? in.call : state.calls.anonymousId(),
                 waiting::withdrawn);
         if (call == null) {
-            state.waitingPermits.release();
+            state.leaveWaiting(client);
             throw new ErrorAnswer(WireError.CANCELLED, "call " + in.call + " was cancelled");
         }
         waiting.call = call;
@@ -178,7 +181,7 @@ final class SpaceOperations {
         } catch (RuntimeException e) {
             state.calls.finish(call);
             state.calls.done(call, false);
-            state.waitingPermits.release();
+            state.leaveWaiting(client);
             throw e;
         }
         state.calls.attach(call, pending);
@@ -189,12 +192,14 @@ final class SpaceOperations {
         private final Operation operation;
         private final boolean split;
         private final Step step;
+        private final InetAddress client;
         CallRegistry.InFlight call;
 
-        WaitingCall(Operation operation, boolean split, Step step) {
+        WaitingCall(Operation operation, boolean split, Step step, InetAddress client) {
             this.operation = operation;
             this.split = split;
             this.step = step;
+            this.client = client;
         }
 
         @Override
@@ -206,14 +211,14 @@ final class SpaceOperations {
                     removal.restore();
                 }
                 state.calls.done(call, wrote);
-                state.waitingPermits.release();
+                state.leaveWaiting(client);
                 if (!wrote) {
                     step.failed(noEffect());
                     return;
                 }
             } else {
                 state.calls.done(call, wrote);
-                state.waitingPermits.release();
+                state.leaveWaiting(client);
             }
             step.done(result);
         }
@@ -222,7 +227,7 @@ final class SpaceOperations {
         public void failed(SpaceException failure) {
             boolean cancelled = state.calls.finish(call);
             state.calls.done(call, false);
-            state.waitingPermits.release();
+            state.leaveWaiting(client);
             if (cancelled) {
                 step.failed(noEffect());
             } else if (split && failure instanceof SpaceTimeoutException) {
@@ -236,7 +241,7 @@ final class SpaceOperations {
         void withdrawn() {
             state.calls.finish(call);
             state.calls.done(call, false);
-            state.waitingPermits.release();
+            state.leaveWaiting(client);
             step.failed(noEffect());
         }
 
@@ -248,12 +253,12 @@ final class SpaceOperations {
     }
 
     /**
-     * Every place for a waiting operation is taken. An operation that can complete at once still does: the places
+     * Every place for a waiting operation is taken (the server's, or its client's address's: {@code why}). An operation that can complete at once still does: the places
      * are usually held by calls waiting for answers, and the operations that produce those answers (a provider
      * taking the next request) must never be refused for that. Only an operation that would have to wait is told
      * to come back ({@code busy}).
      */
-    private void tryOnceOrBusy(Operation operation, RequestFields in, Exchange exchange, Step step) {
+    private void tryOnceOrBusy(Operation operation, RequestFields in, Exchange exchange, Step step, String why) {
         waitFor(operation, in, Timeout.TRY_ONCE, 0, exchange, new Step() {
             @Override
             public void done(Object result) {
@@ -263,7 +268,7 @@ final class SpaceOperations {
             @Override
             public void failed(RuntimeException failure) {
                 step.failed(failure instanceof SpaceTimeoutException
-                        ? new ErrorAnswer(WireError.BUSY, "too many operations are waiting on this server; try again")
+                        ? new ErrorAnswer(WireError.BUSY, why)
                         : failure);
             }
         });

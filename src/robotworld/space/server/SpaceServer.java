@@ -100,6 +100,8 @@ public final class SpaceServer implements AutoCloseable {
         connector.setPort(options.port());
         connector.setAcceptQueueSize(1024); // a provider starting a thousand modules connects all at once
         connector.setIdleTimeout(Math.max(options.maxWaitMillis(), options.heartbeatMillis()) + 30_000);
+        ClientLimits clients = new ClientLimits(options);
+        connector.addBean(clients); // told of every connection opened and closed
         jetty.addConnector(connector);
         try {
             connector.open(); // bind now: the URI (and a space's crefs) need the actual port
@@ -114,7 +116,7 @@ public final class SpaceServer implements AutoCloseable {
         // crefs carry the server's URL, unless the space has one URI on every server in front of it (a cluster)
         URI crefUri = served.sharedUri() ? served.spaceUri() : publicUri;
         WireContext wire = WireContext.of(options.limits(), CrefMapping.between(served.spaceUri(), crefUri));
-        ServerState state = new ServerState(served, publicUri, wire, options);
+        ServerState state = new ServerState(served, publicUri, wire, options, clients);
         if (!ownsSpace) {
             state.sessions.adopt(ParkedSessions.adopt(served)); // left by a server that stopped gracefully
         }
@@ -137,6 +139,8 @@ public final class SpaceServer implements AutoCloseable {
         });
         long sessionGrace = TimeUnit.MILLISECONDS.toNanos(options.sessionGraceMillis());
         sessionTimer.scheduleWithFixedDelay(() -> state.sessions.expire(sessionGrace), 100, 100, TimeUnit.MILLISECONDS);
+        sessionTimer.scheduleWithFixedDelay(clients::sweep, clients.sweepMillis(), clients.sweepMillis(),
+                TimeUnit.MILLISECONDS);
         try {
             jetty.start();
         } catch (Exception e) {
@@ -296,15 +300,32 @@ public final class SpaceServer implements AutoCloseable {
      * @param sessionGraceMillis         how long a notification session waits for its client to reconnect (also
      *                                   across a graceful restart) before its subscriptions are cancelled
      * @param maxConnections             most open connections at once; at the limit the server stops accepting
-     *                                   and closes idle connections sooner
+     *                                   (new connections wait in the listen queue until one closes)
+     * @param maxConnectionsPerClient    most open connections from one remote address; a connection beyond it has
+     *                                   its first request answered 503 {@code busy} and is closed, unless that
+     *                                   request carries the token
+     * @param maxWaitingPerClient        most operations waiting at once from one remote address (then, like at
+     *                                   {@code maxWaitingCalls}, only an operation that would have to wait gets
+     *                                   503 {@code busy}); requests that carry the token are not counted
+     * @param requestReadMillis          how long a request's head and body may take to arrive, from its first
+     *                                   byte; a connection still sending one then is closed, at most
+     *                                   {@code min(2 s, requestReadMillis / 2)} later (idle connections and
+     *                                   waiting requests are not affected)
      */
     public record Options(String bindAddress, int port, String path, String token, URI publicUri, WireLimits limits,
                           long maxWaitMillis, long leaseMillis, long heartbeatMillis, long stopGraceMillis,
                           int maxWaitingCalls, int maxSessions, int sessionQueue, int maxSubscriptionsPerSession,
-                          int notificationQueue, long sessionGraceMillis, int maxConnections) {
+                          int notificationQueue, long sessionGraceMillis, int maxConnections,
+                          int maxConnectionsPerClient, int maxWaitingPerClient, long requestReadMillis) {
 
         /** The port used when none is given. */
         public static final int DEFAULT_PORT = 9876;
+
+        /** Connections, and waiting operations, one remote address may hold by default: half the server's. */
+        public static final int DEFAULT_PER_CLIENT = 2_048;
+
+        /** How long a request may take to arrive by default. */
+        public static final long DEFAULT_REQUEST_READ_MILLIS = 10_000;
 
         /** Validates the values. */
         public Options {
@@ -316,106 +337,146 @@ public final class SpaceServer implements AutoCloseable {
             }
             if (maxWaitMillis < 10 || leaseMillis < 10 || heartbeatMillis < 10 || stopGraceMillis < 0
                     || maxWaitingCalls < 1 || maxSessions < 1 || sessionQueue < 1 || maxSubscriptionsPerSession < 1
-                    || notificationQueue < 1 || sessionGraceMillis < 10 || maxConnections < 1) {
+                    || notificationQueue < 1 || sessionGraceMillis < 10 || maxConnections < 1
+                    || maxConnectionsPerClient < 1 || maxWaitingPerClient < 1 || requestReadMillis < 10) {
                 throw new IllegalArgumentException("server times and limits must be positive");
             }
         }
 
-        /** Loopback, port 9876, path {@code /space}, no token, default limits, 20 s waits, 10 s leases. */
+        /**
+         * Loopback, port 9876, path {@code /space}, no token, default limits, 20 s waits, 10 s leases; 4 096
+         * connections and 4 096 waiting operations, at most half of each from one address; 10 s for a request to
+         * arrive.
+         */
         public static Options defaults() {
             return new Options("127.0.0.1", DEFAULT_PORT, "/space", null, null, WireLimits.DEFAULTS, 20_000, 10_000,
-                    2_000, 1_000, 4_096, 128, 10_000, 1_000, EmbeddedSpace.DEFAULT_NOTIFICATION_QUEUE, 10_000, 4_096);
+                    2_000, 1_000, 4_096, 128, 10_000, 1_000, EmbeddedSpace.DEFAULT_NOTIFICATION_QUEUE, 10_000, 4_096,
+                    DEFAULT_PER_CLIENT, DEFAULT_PER_CLIENT, DEFAULT_REQUEST_READ_MILLIS);
         }
 
         /** With another address to listen on. */
         public Options bindAddress(String address) {
             return new Options(address, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections,
+                    maxConnectionsPerClient, maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another port (0: any free one). */
         public Options port(int newPort) {
             return new Options(bindAddress, newPort, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections,
+                    maxConnectionsPerClient, maxWaitingPerClient, requestReadMillis);
         }
 
         /** With a bearer token every request must carry. */
         public Options token(String newToken) {
             return new Options(bindAddress, port, path, newToken, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections,
+                    maxConnectionsPerClient, maxWaitingPerClient, requestReadMillis);
         }
 
         /** With the URI clients use and crefs carry. */
         public Options publicUri(URI uri) {
             return new Options(bindAddress, port, path, token, uri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections,
+                    maxConnectionsPerClient, maxWaitingPerClient, requestReadMillis);
         }
 
         /** With other message limits. */
         public Options limits(WireLimits newLimits) {
             return new Options(bindAddress, port, path, token, publicUri, newLimits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections,
+                    maxConnectionsPerClient, maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another longest wait per request. */
         public Options maxWaitMillis(long millis) {
-            return new Options(bindAddress, port, path, token, publicUri, limits, millis, leaseMillis,
-                    heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+            return new Options(bindAddress, port, path, token, publicUri, limits, millis, leaseMillis, heartbeatMillis,
+                    stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue, maxSubscriptionsPerSession,
+                    notificationQueue, sessionGraceMillis, maxConnections, maxConnectionsPerClient,
+                    maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another lease for unconfirmed takes. */
         public Options leaseMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, millis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections,
+                    maxConnectionsPerClient, maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another heartbeat period. */
         public Options heartbeatMillis(long millis) {
-            return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
-                    millis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+            return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis, millis,
+                    stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue, maxSubscriptionsPerSession,
+                    notificationQueue, sessionGraceMillis, maxConnections, maxConnectionsPerClient,
+                    maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another grace period for a graceful stop. */
         public Options stopGraceMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
-                    heartbeatMillis, millis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    heartbeatMillis, millis, maxWaitingCalls, maxSessions, sessionQueue, maxSubscriptionsPerSession,
+                    notificationQueue, sessionGraceMillis, maxConnections, maxConnectionsPerClient,
+                    maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another bound on waiting requests. */
         public Options maxWaitingCalls(int calls) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
-                    heartbeatMillis, stopGraceMillis, calls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, maxConnections);
+                    heartbeatMillis, stopGraceMillis, calls, maxSessions, sessionQueue, maxSubscriptionsPerSession,
+                    notificationQueue, sessionGraceMillis, maxConnections, maxConnectionsPerClient,
+                    maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another grace period for reconnecting notification sessions. */
         public Options sessionGraceMillis(long millis) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, millis, maxConnections);
+                    maxSubscriptionsPerSession, notificationQueue, millis, maxConnections, maxConnectionsPerClient,
+                    maxWaitingPerClient, requestReadMillis);
         }
 
         /** With another bound on open connections (then new ones wait in the listen queue). */
         public Options maxConnections(int connections) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, connections);
+                    maxSubscriptionsPerSession, notificationQueue, sessionGraceMillis, connections,
+                    maxConnectionsPerClient, maxWaitingPerClient, requestReadMillis);
+        }
+
+        /** With another bound on open connections from one remote address. */
+        public Options maxConnectionsPerClient(int connections) {
+            return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
+                    heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue, maxSubscriptionsPerSession,
+                    notificationQueue, sessionGraceMillis, maxConnections, connections, maxWaitingPerClient, requestReadMillis);
+        }
+
+        /** With another bound on waiting operations from one remote address. */
+        public Options maxWaitingPerClient(int calls) {
+            return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
+                    heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue, maxSubscriptionsPerSession,
+                    notificationQueue, sessionGraceMillis, maxConnections, maxConnectionsPerClient, calls, requestReadMillis);
+        }
+
+        /** With another deadline for a request's head and body to arrive. */
+        public Options requestReadMillis(long millis) {
+            return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
+                    heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue, maxSubscriptionsPerSession,
+                    notificationQueue, sessionGraceMillis, maxConnections, maxConnectionsPerClient, maxWaitingPerClient, millis);
         }
 
         /** With another per-subscription queue for a space the server creates. */
         public Options notificationQueue(int capacity) {
             return new Options(bindAddress, port, path, token, publicUri, limits, maxWaitMillis, leaseMillis,
                     heartbeatMillis, stopGraceMillis, maxWaitingCalls, maxSessions, sessionQueue,
-                    maxSubscriptionsPerSession, capacity, sessionGraceMillis, maxConnections);
+                    maxSubscriptionsPerSession, capacity, sessionGraceMillis, maxConnections, maxConnectionsPerClient,
+                    maxWaitingPerClient, requestReadMillis);
         }
     }
 }

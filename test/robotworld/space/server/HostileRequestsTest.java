@@ -112,6 +112,9 @@ class HostileRequestsTest {
                     new Refused("headers too large", 431, "GET " + path + " HTTP/1.1\r\nX-Filler: "
                             + "h".repeat(40_000) + "\r\n"),
                     new Refused("unsupported HTTP version", 505, "GET " + path + " HTTP/3.0\r\n"),
+                    new Refused("HTTP/2 preface on an HTTP/1.1 port", 426, "PRI * HTTP/2.0\r\n"),
+                    new Refused("headers too large on a PUT", 431, "PUT " + path + " HTTP/1.1\r\nX-Filler: "
+                            + "h".repeat(40_000) + "\r\n"),
                     new Refused("body ends before its length", 400, "POST " + path + "/lookup HTTP/1.1\r\n"
                             + "Content-Type: application/json\r\nContent-Length: 400\r\n"));
             for (Refused refused : cases) {
@@ -170,6 +173,15 @@ class HostileRequestsTest {
                 assertTrue(third.head().contains("Retry-After"), third.head());
                 // a try-once operation needs no waiting slot
                 client.write(empty, Timeout.TRY_ONCE, Entry.of(1));
+                // nor does a take that may wait but can complete at once (a provider taking the next request
+                // while every place is held by callers waiting for answers)
+                ContainerRef full = client.createContainer(ContainerSpec.of(Order.FIFO));
+                client.write(full, Timeout.TRY_ONCE, Entry.of("ready"));
+                String ready = "{\"container\":{\"cref\":\"" + full.id() + "\",\"space\":\"" + full.space()
+                        + "\"},\"timeout\":10000}";
+                RawHttp.Answer served = RawHttp.post(server.uri(), "/take", JSON, ready);
+                assertEquals(200, served.status(), served.body());
+                assertTrue(served.body().contains("ready"), served.body());
             } finally {
                 for (java.net.Socket socket : waiting) {
                     socket.close();

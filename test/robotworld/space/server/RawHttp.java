@@ -36,7 +36,16 @@ final class RawHttp {
 
     /** Sends a request head (without the blank line, which is added) and a body as given. */
     static Answer send(URI space, String head, byte[] body) throws IOException {
-        try (Socket socket = new Socket(space.getHost(), space.getPort())) {
+        return sendFrom(null, space, head, body);
+    }
+
+    /** As {@link #send}, from the local address {@code from} (null: any). */
+    static Answer sendFrom(java.net.InetAddress from, URI space, String head, byte[] body) throws IOException {
+        try (Socket socket = new Socket()) {
+            if (from != null) {
+                socket.bind(new java.net.InetSocketAddress(from, 0));
+            }
+            socket.connect(new java.net.InetSocketAddress(space.getHost(), space.getPort()), 10_000);
             socket.setSoTimeout(10_000);
             OutputStream out = socket.getOutputStream();
             String full = head + (head.contains("\r\nHost:") ? "" : "Host: " + space.getHost() + "\r\n")
