@@ -38,20 +38,31 @@ public record BusTiming(Duration responseTimeout, int attempts, Duration interBy
     /** The setting that changes the default response timeout, in milliseconds. */
     public static final String RESPONSE_TIMEOUT_PROPERTY = "rwe.bus.timeout.ms";
 
+    /** The environment variable that does the same when the property is not given. */
+    public static final String RESPONSE_TIMEOUT_VARIABLE = "RWE_BUS_TIMEOUT_MS";
+
     /**
-     * Defaults for real modules: 100 ms to start a reply (or {@value #RESPONSE_TIMEOUT_PROPERTY}, for modules
+     * Defaults for real modules: 100 ms to start a reply (or {@value #RESPONSE_TIMEOUT_PROPERTY} /
+     * {@value #RESPONSE_TIMEOUT_VARIABLE}, for modules
      * reached through something slower than a serial line, such as a simulator on a busy machine), 3 attempts,
-     * 20 ms inside a reply, 8 ms scan allowance, the 3.5-character frame gap, 5 s for a servo move.
+     * 20 ms inside a reply (a fifth of a longer response timeout), 8 ms scan allowance, the 3.5-character frame gap, 5 s for a servo move.
      *
      * @throws IllegalArgumentException when {@value #RESPONSE_TIMEOUT_PROPERTY} is set but not a positive number
      */
     public static BusTiming defaults() {
-        return new BusTiming(defaultResponseTimeout(), 3, Duration.ofMillis(20), Duration.ofMillis(8),
-                AUTO_FRAME_GAP, Duration.ofSeconds(5));
+        Duration response = defaultResponseTimeout();
+        // a link slow to start a reply (a gateway, a simulator on a busy machine) also pauses inside one: a fifth of
+        // the response timeout, never less than the 20 ms a serial line needs
+        Duration interByte = Duration.ofMillis(Math.max(20, response.toMillis() / 5));
+        return new BusTiming(response, 3, interByte, Duration.ofMillis(8), AUTO_FRAME_GAP, Duration.ofSeconds(5));
     }
 
     private static Duration defaultResponseTimeout() {
         String value = System.getProperty(RESPONSE_TIMEOUT_PROPERTY);
+        if (value == null || value.isBlank()) {
+            // like the other run-time settings, also from the environment: it reaches programs started by others
+            value = System.getenv(RESPONSE_TIMEOUT_VARIABLE);
+        }
         if (value == null || value.isBlank()) {
             return Duration.ofMillis(100);
         }

@@ -25,6 +25,15 @@ class BusTimingTest {
     }
 
     @Test
+    void aSlowLinkMayAlsoPauseLongerInsideAReply() {
+        assertEquals(Duration.ofMillis(20), BusTiming.defaults().interByteTimeout());
+        System.setProperty(BusTiming.RESPONSE_TIMEOUT_PROPERTY, "1000");
+        assertEquals(Duration.ofMillis(200), BusTiming.defaults().interByteTimeout());
+        System.setProperty(BusTiming.RESPONSE_TIMEOUT_PROPERTY, "50");
+        assertEquals(Duration.ofMillis(20), BusTiming.defaults().interByteTimeout());
+    }
+
+    @Test
     void aBadSettingIsNamedNotIgnored() {
         System.setProperty(BusTiming.RESPONSE_TIMEOUT_PROPERTY, "soon");
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, BusTiming::defaults);

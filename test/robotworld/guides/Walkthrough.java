@@ -186,6 +186,7 @@ final class Walkthrough implements AutoCloseable {
         environment.put("PATH", ant() + File.pathSeparator + Path.of(System.getProperty("java.home"), "bin")
                 + File.pathSeparator + environment.getOrDefault("PATH", "/usr/bin:/bin"));
         environment.put("JAVA_HOME", System.getProperty("java.home"));
+        relaxTimings(environment);
         if (!freshClone) {
             environment.put("RWE_NO_BUILD", "1"); // ./antw test built it; never a second build beside this one
             String buildDir = System.getProperty("rwe.build.dir");
@@ -194,6 +195,18 @@ final class Walkthrough implements AutoCloseable {
             }
         }
         return builder.start();
+    }
+
+    /**
+     * The programs a guide starts get the safety deadlines and bus reply time the suite's own JVMs get (build.xml):
+     * a guide's test is about its steps, and a program starved of CPU for half a second by the rest of the suite
+     * must not be stopped by the safety layer (500 ms by default) or give up on the simulator (100 ms). The safety
+     * tests set the timings they are about. Environment variables, so they reach every program a step starts.
+     */
+    static void relaxTimings(Map<String, String> environment) {
+        environment.putIfAbsent("RWE_COMMAND_TIMEOUT_MS", "10000");
+        environment.putIfAbsent("RWE_WATCHDOG_MS", "10000");
+        environment.putIfAbsent("RWE_BUS_TIMEOUT_MS", "1000");
     }
 
     /** Puts {@code program} between the control markers of {@code relative}, in place of what is there. */
