@@ -166,6 +166,24 @@ class CM11aProtocolTest {
     }
 
     @Test
+    void powerFailPollsSentBeforeTheClockArrivedArePassedOverHoweverMany() throws Exception {
+        // a host held up for a while (a busy machine, a slow bridge) finds many polls ahead of the checksum
+        device.send("A5");
+        CM11aClock expected = CM11aClock.of(NOW, HouseCode.A);
+        assertArrayEquals(expected.frame(), device.read(7));
+        device.send("A5 A5 A5 A5 A5 A5 " + Hex.of(expected.checksum())).expect("00").send("55");
+        device.expectSilence(100); // the clock went out once
+    }
+
+    @Test
+    void uploadPollsSentBeforeTheAcknowledgeArrivedArePassedOverHoweverMany() throws Exception {
+        device.send("5A").expect("C3").send("5A 5A 5A 5A 5A 5A 03 02 E9 E2");
+        X10Event event = events.poll(30, TimeUnit.SECONDS);
+        assertNotNull(event);
+        assertEquals(X10Event.of(HouseCode.B, List.of(6), X10Function.ON), event);
+    }
+
+    @Test
     void deadDeviceTimesOutWithinTheDocumentedTime() throws Exception {
         long start = System.nanoTime();
         X10TimeoutException e = assertThrows(X10TimeoutException.class, () -> controller.on(X10Address.of('A', 3)));
