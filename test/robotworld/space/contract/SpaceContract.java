@@ -31,7 +31,9 @@ import robotworld.space.Order;
  * <p>Waiting in these tests is always on a condition with a deadline, never a fixed sleep: a blocked operation
  * is recognised by the container's {@code blocked} count.
  */
-@org.junit.jupiter.api.Timeout(value = 30)
+// a hang guard above SOON, so that a test waiting for SOON fails with its own message: on a busy 2-core machine the
+// thousands of calls of the stress tests through a served cluster take longer than 30 s
+@org.junit.jupiter.api.Timeout(value = 180)
 public abstract class SpaceContract {
 
     /**
