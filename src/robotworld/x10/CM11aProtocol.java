@@ -161,10 +161,7 @@ final class CM11aProtocol {
     /** 0x5A: answer 0xC3, read {@code size mask data...}, decode, hand the events on. */
     private void answerUploadPoll() throws IOException {
         link.write(X10Constants.CM11A_POLL_ACK);
-        int size = link.readByte(config.checksumTimeout());
-        for (int skipped = 0; size == X10Constants.CM11A_POLL && skipped < config.maxAttempts(); skipped++) {
-            size = link.readByte(config.checksumTimeout()); // polls sent before our 0xC3 arrived
-        }
+        int size = readSkippingPolls(X10Constants.CM11A_POLL, -1); // polls sent before our 0xC3 arrived
         if (size == X10Constants.CM11A_POWER_FAIL_POLL) {
             answerPowerFailPoll();
             return;
@@ -199,11 +196,7 @@ final class CM11aProtocol {
             int expected = clock.checksum();
             awaitQuietAfterReady();
             link.write(clock.frame());
-            int reply = link.readByte(config.checksumTimeout());
-            for (int skipped = 0; reply == X10Constants.CM11A_POWER_FAIL_POLL && expected != reply
-                    && skipped < config.maxAttempts(); skipped++) {
-                reply = link.readByte(config.checksumTimeout()); // polls sent before our clock arrived
-            }
+            int reply = readSkippingPolls(X10Constants.CM11A_POWER_FAIL_POLL, expected); // polls sent before it came
             if (reply != expected) {
                 LOG.debug("{}: clock checksum {} (expected {})", portName(),
                         reply < 0 ? "missing" : Hex.of(reply), Hex.of(expected));
@@ -219,6 +212,26 @@ final class CM11aProtocol {
         }
         throw new X10ProtocolException(portName(), "the interface did not accept the clock after "
                 + config.maxAttempts() + " attempts");
+    }
+
+    /**
+     * Reads the answer to what was just sent, passing over {@code poll} bytes (unless {@code poll} is the
+     * answer expected): the interface polls until what we sent has arrived, so polls it sent before that may be
+     * waiting ahead of the answer, the more so the longer this host was held up (a busy machine, a slow bridge).
+     * They are passed over for up to one checksum timeout, so an interface that keeps polling still fails in
+     * bounded time. Returns the first other byte, or -1 if none came.
+     */
+    private int readSkippingPolls(int poll, int expected) throws IOException {
+        long deadline = System.nanoTime() + config.checksumTimeout().toNanos();
+        int reply = link.readByte(config.checksumTimeout());
+        while (reply == poll && reply != expected) {
+            long left = deadline - System.nanoTime();
+            if (left <= 0) {
+                break;
+            }
+            reply = link.readByte(Duration.ofNanos(left));
+        }
+        return reply;
     }
 
     /** 0x8B: read the 14 status bytes. */

@@ -33,9 +33,9 @@ class JSerialCommLinkTimingTest {
             a.write(new byte[] {1, 2, 3});
             long start = System.nanoTime();
             // a long timeout, so that "returned without waiting it out" holds however busy the machine is
-            int n = b.read(buffer, 0, buffer.length, Duration.ofSeconds(4));
+            int n = b.read(buffer, 0, buffer.length, Duration.ofSeconds(30));
             assertTrue(n >= 1, "data arrives");
-            assertTrue(System.nanoTime() - start < 2_000_000_000L, "and is returned without waiting out the timeout");
+            assertTrue(System.nanoTime() - start < 15_000_000_000L, "and is returned without waiting out the timeout");
         }
     }
 }

@@ -20,16 +20,16 @@ class LateReplyOverTcpTest {
     @Test
     void aReplyAfterItsTimeoutIsNeverTakenForTheNextCallsAnswer() throws Exception {
         String atTheWall = BusRig.FOUR_MODULES.replace("<Body x=\"500\"", "<Body x=\"1850\"");
-        // a 250 ms timeout with one attempt (late-reply window 1 s) and a module that answers 600 ms late: the late
+        // a 500 ms timeout with one attempt (late-reply window 2 s) and a module that answers 1.2 s late: the late
         // reply comes while the next call waits out the window, and a busy machine has room to be slow in both
-        BusTiming timing = BusRig.TIMING.withResponseTimeout(Duration.ofMillis(250)).withAttempts(1);
+        BusTiming timing = BusRig.TIMING.withResponseTimeout(Duration.ofMillis(500)).withAttempts(1);
         try (BusRig rig = BusRig.tcp(atTheWall, timing)) {
             BumperModuleProxy bumper = new BumperModuleProxy(rig.bus(), 2, "Bumper-Sensor");
-            assertEquals(FRONT_BUMPERS, bumper.getAllBumper());
+            assertEquals(FRONT_BUMPERS, onceAnswered(bumper));
 
-            rig.robot().faults(2).replyDelay(Duration.ofMillis(600));
+            rig.robot().faults(2).replyDelay(Duration.ofMillis(1_200));
             assertThrows(BusTimeoutException.class, () -> bumper.getSingleBumper(4)); // its 02 01 01 comes late
-            Thread.sleep(200); // the late reply is due about 150 ms into the next call
+            Thread.sleep(400); // the late reply is due about 300 ms into the next call
             try {
                 assertEquals(FRONT_BUMPERS, bumper.getAllBumper(), "never the late single-bumper reply (1)");
             } catch (BusTimeoutException stillSlow) {
@@ -37,11 +37,28 @@ class LateReplyOverTcpTest {
             }
 
             rig.robot().faults(2).replyDelay(Duration.ZERO);
-            assertEquals(FRONT_BUMPERS, bumper.getAllBumper(), "once the module is quick again");
-            assertEquals(FRONT_BUMPERS, bumper.getAllBumper());
+            assertEquals(FRONT_BUMPERS, onceAnswered(bumper), "once the module is quick again");
+            assertEquals(FRONT_BUMPERS, onceAnswered(bumper));
             BusStatistics statistics = rig.bus().statistics();
             assertTrue(statistics.staleReplies() >= 1, "late replies are counted as stale: " + statistics);
             assertEquals(0, statistics.strayFrames(), statistics.toString());
+        }
+    }
+
+    /**
+     * All bumpers, asked again if the answer missed its 500 ms timeout: a quick module on a very busy machine may
+     * (one attempt per call here); every answer that does come is checked.
+     */
+    private static int onceAnswered(BumperModuleProxy bumper) {
+        long giveUp = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+        while (true) {
+            try {
+                return bumper.getAllBumper();
+            } catch (BusTimeoutException late) {
+                if (System.nanoTime() - giveUp > 0) {
+                    throw late;
+                }
+            }
         }
     }
 }

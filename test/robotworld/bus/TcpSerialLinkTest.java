@@ -43,7 +43,7 @@ class TcpSerialLinkTest {
             host.write(all);
             assertArrayEquals(all, readExactly(device, all.length));
             device.write(0xA5);
-            assertEquals(0xA5, host.readByte(Duration.ofSeconds(2)));
+            assertEquals(0xA5, host.readByte(Duration.ofSeconds(30)));
         }
     }
 
@@ -65,7 +65,7 @@ class TcpSerialLinkTest {
     void peerClosingIsReportedNotRepeatedEmptyReads() throws IOException {
         try (SerialLink host = connect()) {
             server.accept().close();
-            assertThrows(LinkClosedException.class, () -> host.readByte(Duration.ofSeconds(2)));
+            assertThrows(LinkClosedException.class, () -> host.readByte(Duration.ofSeconds(30)));
         }
     }
 
@@ -90,7 +90,7 @@ class TcpSerialLinkTest {
                 assertEquals(-1, host.readByte(Duration.ofMillis(20))); // must not wait forever
                 assertTrue((System.nanoTime() - start) / 1_000_000 < 5_000);
                 device.write(0x55);
-                assertEquals(0x55, host.readByte(Duration.ofSeconds(2)));
+                assertEquals(0x55, host.readByte(Duration.ofSeconds(30)));
             }
         } finally {
             host.close();
@@ -109,7 +109,7 @@ class TcpSerialLinkTest {
         byte[] buffer = new byte[length];
         int filled = 0;
         while (filled < length) {
-            int n = link.read(buffer, filled, length - filled, Duration.ofSeconds(2));
+            int n = link.read(buffer, filled, length - filled, Duration.ofSeconds(30));
             if (n == 0) {
                 throw new IOException("only " + filled + " of " + length + " bytes arrived");
             }

@@ -50,20 +50,37 @@ public final class LinkFaultProxy implements AutoCloseable {
     }
 
     /** Closes every connection and refuses new ones (accepted, then closed at once). */
-    public void drop() {
+    public synchronized void drop() {
         mode = Mode.DROP;
         pipes.forEach(Pipe::close);
     }
 
     /** Lets nothing through any connection, old or new, without closing any. */
-    public void silence() {
+    public synchronized void silence() {
         mode = Mode.SILENT;
         pipes.forEach(pipe -> pipe.silent = true);
     }
 
     /** Relays new connections again; connections silenced before stay silent. */
-    public void restore() {
+    public synchronized void restore() {
         mode = Mode.RELAY;
+    }
+
+    /**
+     * Adds a connection that was being set up while the mode may have changed (connecting to the device takes a
+     * moment): it meets the fault now in force, so that no connection escapes a {@link #drop()} or
+     * {@link #silence()}.
+     */
+    private synchronized void register(Pipe pipe) throws IOException {
+        if (mode == Mode.DROP) {
+            pipe.close();
+            return;
+        }
+        if (mode == Mode.SILENT) {
+            pipe.silent = true;
+        }
+        pipes.add(pipe);
+        pipe.start();
     }
 
     /** How many connections clients have made. */
@@ -81,13 +98,13 @@ public final class LinkFaultProxy implements AutoCloseable {
                 client.setTcpNoDelay(true);
                 switch (mode) {
                     case DROP -> client.close();
-                    case SILENT -> pipes.add(new Pipe(client, null, true));
+                    case SILENT -> register(new Pipe(client, null, true));
                     case RELAY -> {
                         Socket device = new Socket();
                         try {
                             device.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), targetPort), 2_000);
                             device.setTcpNoDelay(true);
-                            pipes.add(new Pipe(client, device, false));
+                            register(new Pipe(client, device, false));
                         } catch (IOException e) {
                             device.close();
                             client.close(); // nothing listens behind us: as if the bridge refused
@@ -102,7 +119,7 @@ public final class LinkFaultProxy implements AutoCloseable {
     }
 
     @Override
-    public void close() throws IOException {
+    public synchronized void close() throws IOException {
         server.close();
         pipes.forEach(Pipe::close);
     }
@@ -113,10 +130,13 @@ public final class LinkFaultProxy implements AutoCloseable {
         private final Socket device;
         private volatile boolean silent;
 
-        Pipe(Socket client, Socket device, boolean silent) throws IOException {
+        Pipe(Socket client, Socket device, boolean silent) {
             this.client = client;
             this.device = device;
             this.silent = silent;
+        }
+
+        void start() throws IOException {
             start(client, device, "up");
             if (device != null) {
                 start(device, client, "down");

@@ -9,7 +9,8 @@ import robotworld.bus.SerialLink;
 /** The device end of an in-memory link, driven step by step by a test: expect these bytes, answer those. */
 final class ScriptedDevice {
 
-    private static final Duration WAIT = Duration.ofSeconds(2);
+    /** How long to wait for the host's bytes: they come at once, unless the machine is very busy. */
+    private static final Duration WAIT = Duration.ofSeconds(30);
 
     private final SerialLink link;
 

@@ -25,7 +25,8 @@ import robotworld.testsupport.TcpBlackhole;
 class ProviderSurvivesLostSpaceTest {
 
     private static final long ALLOWANCE_MILLIS = 1_000;
-    private static final long SLACK_MILLIS = 2_000;
+    /** What a busy machine may add to a bound; the bounds themselves are what is asserted against. */
+    private static final long SLACK_MILLIS = 10_000;
 
     private EmbeddedSpace space;
     private SpaceServer server;

@@ -64,7 +64,7 @@ final class EventStream {
     void subscribe(RemoteSubscription subscription, long deadline) {
         while (true) {
             String current = awaitSession(deadline);
-            Timeout timeout = subscription.remainingTimeout();
+            Timeout timeout = subscription.timeoutOnServer();
             Answer answer;
             try {
                 answer = owner.subscribeOnServer(sessionId, subscription,
@@ -75,6 +75,7 @@ final class EventStream {
             }
             subscription.completeUpTo = answer.sequence;
             register(current, answer.subscription, subscription);
+            subscription.established(owner.timer());
             return;
         }
     }
@@ -275,7 +276,7 @@ final class EventStream {
                 end(subscription, SubscriptionEnd.CANCELLED);
                 continue;
             }
-            Timeout timeout = subscription.remainingTimeout();
+            Timeout timeout = subscription.timeoutOnServer();
             if (timeout == null) {
                 end(subscription, SubscriptionEnd.EXPIRED);
                 continue;
@@ -295,6 +296,7 @@ final class EventStream {
                 continue;
             }
             register(current, answer.subscription, subscription);
+            subscription.established(owner.timer());
         }
     }
 

@@ -7,8 +7,10 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.Executor;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
 
 import robotworld.space.ContainerRef;
 import robotworld.space.Notification;
@@ -42,6 +44,8 @@ final class RemoteSubscription implements Subscription {
     private final AtomicBoolean cancelRequested = new AtomicBoolean();
     private final long startNanos = System.nanoTime();
     private volatile long lastFiredNanos = startNanos;
+    /** How many notifications came: a PROLONG period the client ends itself checks whether one came meanwhile. */
+    private final AtomicLong firings = new AtomicLong();
 
     /** The server's id of this subscription on the current stream, or null while it is not established. */
     volatile String serverId;
@@ -98,6 +102,7 @@ final class RemoteSubscription implements Subscription {
         }
         completeUpTo = Math.max(completeUpTo, notification.sequence());
         lastFiredNanos = System.nanoTime();
+        firings.incrementAndGet();
         if (!queue.offer(notification)) {
             end(SubscriptionEnd.OVERFLOWED);
             canceller.cancel(this);
@@ -118,7 +123,58 @@ final class RemoteSubscription implements Subscription {
     }
 
     /**
-     * The timeout to ask for when re-establishing this subscription, or null if it has run out meanwhile.
+     * The timeout to ask the server for when establishing this subscription (again), or null if it has run out
+     * meanwhile. {@code ONCE} and {@code RESTRICTED}: what is left of it, as it counts from subscribing.
+     * {@code PROLONG}: the whole timeout, because the server restarts the timeout it was given at every firing;
+     * asking for what is left of the current period would shorten every later period, and the subscription would
+     * expire before a full timeout had passed without a firing. What is left of the current period is kept by the
+     * client ({@link #established}).
+     */
+    Timeout timeoutOnServer() {
+        Timeout left = remainingTimeout();
+        if (left == null || mode != NotificationMode.PROLONG || timeout.isInfinite()) {
+            return left;
+        }
+        return timeout;
+    }
+
+    /**
+     * The subscription was established on the server. For {@code PROLONG} the server's clock has just started with
+     * the whole timeout, though the current period began earlier (on subscribing, or at the last notification
+     * before the stream broke): if nothing fires in what is left of it, the client ends the subscription as
+     * {@link SubscriptionEnd#EXPIRED} then, as the period's end, and takes it off the server.
+     */
+    void established(ScheduledExecutorService timer) {
+        if (mode != NotificationMode.PROLONG || timeout.isInfinite()) {
+            return;
+        }
+        long period = firings.get();
+        Timeout left = remainingTimeout(); // rounded up to whole milliseconds: never ends the period early
+        if (left == null) {
+            return; // the server was given no time either: it ends the subscription itself
+        }
+        try {
+            timer.schedule(() -> expireIfNothingFiredSince(period), left.millis(), TimeUnit.MILLISECONDS);
+        } catch (RejectedExecutionException closing) {
+            // the space is closing: the subscription ends with it
+        }
+    }
+
+    private void expireIfNothingFiredSince(long period) {
+        if (endReason != null || firings.get() != period) {
+            return; // ended, or fired meanwhile: the server's clock, restarted at that firing, goes on
+        }
+        end(SubscriptionEnd.EXPIRED);
+        try {
+            delivery.execute(() -> canceller.cancel(this)); // a call to the server: not on the timer thread
+        } catch (RejectedExecutionException closing) {
+            // the space is closing: its subscriptions end with it on the server too
+        }
+    }
+
+    /**
+     * What is left of this subscription's timeout, or null if it has run out: since subscribing, or for
+     * {@code PROLONG} since the last notification.
      */
     Timeout remainingTimeout() {
         if (mode == NotificationMode.INFINITE || timeout.isInfinite()) {
