@@ -14,6 +14,7 @@ import robotworld.bus.modbus.ExceptionCodes;
 import robotworld.bus.modbus.FrameLength;
 import robotworld.bus.modbus.FrameLengths;
 import robotworld.bus.modbus.FunctionCodes;
+import robotworld.bus.modbus.Pdus;
 import robotworld.bus.modbus.RtuFrame;
 import robotworld.bus.modbus.RtuTiming;
 
@@ -33,6 +34,9 @@ import robotworld.bus.modbus.RtuTiming;
 final class RtuMaster {
 
     private static final Logger LOG = LoggerFactory.getLogger(RtuMaster.class);
+
+    /** Lengths of identification replies (what bus exploration's probes get), to find them among broken bytes. */
+    private static final FrameLength IDENTIFICATION_REPLY = FrameLengths.responseTo(Pdus.readDeviceIdentification());
 
     /** Upper bound for skipping a stream of garbage after a corrupted reply. */
     private static final long MAX_RESYNC_NANOS = 500_000_000L;
@@ -220,6 +224,10 @@ final class RtuMaster {
                 long sent = send(address, frame, attempt > 1);
                 // a late reply to an earlier attempt of this call answers the same request: it is accepted
                 Reply reply = readReply(address, pdu, length, sent + policy.replyTimeout().toNanos(), true);
+                if (LOG.isTraceEnabled()) {
+                    LOG.trace("{} {} attempt {}/{}: {}", describe.apply(address), FunctionCodes.name(pdu[0]), attempt,
+                            policy.attempts(), reply.kind());
+                }
                 if (reply.kind() == Kind.OK) {
                     answeredByCopy = Arrays.equals(reply.pdu(), pdu);
                     if (answeredByCopy && echo.undecided()) {
@@ -369,6 +377,10 @@ final class RtuMaster {
         suspect = null;
         if (misaddressed != null) {
             if (reply.kind() == Kind.TIMEOUT) {
+                // a module answering under the wrong address, or a late reply from that address after its debt was
+                // paid (a second reply to a request sent twice): exploration asks that address once more, where
+                // silence means nobody, so neither a phantom nor a lost module results
+                disturbed(misaddressed.address(), false);
                 return new Reply(Kind.WRONG_ADDRESS, misaddressed.pdu(), misaddressed.address());
             }
             stray(misaddressed); // the right module answered too: the other frame was a late reply after all
@@ -420,6 +432,12 @@ final class RtuMaster {
                     continue;
                 }
                 int expected = length.of(buffer, have);
+                if (expected == FrameLength.UNKNOWN && have >= 2
+                        && buffer[1] == (byte) FunctionCodes.ENCAPSULATED_INTERFACE) {
+                    // an identification reply while something else is asked: a probe's late answer, measured as
+                    // such, so that it is not merged with what follows it and lost as one broken piece
+                    expected = IDENTIFICATION_REPLY.of(buffer, have);
+                }
                 int frameLength;
                 if (expected > 0 && have >= expected) {
                     frameLength = expected;
@@ -444,6 +462,11 @@ final class RtuMaster {
                         continue;
                     }
                     stray(frame);
+                    continue;
+                }
+                if (frame.functionCode() == FunctionCodes.ENCAPSULATED_INTERFACE
+                        && (request[0] & 0xFF) != FunctionCodes.ENCAPSULATED_INTERFACE) {
+                    stray(frame); // a late identification reply of this module: proof of life, not the answer
                     continue;
                 }
                 if (confirmsAnotherWrite(request, frame.pdu())) {
@@ -549,13 +572,11 @@ final class RtuMaster {
     private int readUntilSilence(int have) throws IOException {
         long giveUp = System.nanoTime() + MAX_RESYNC_NANOS;
         int total = have;
-        byte[] scratch = new byte[RtuFrame.MAX_LENGTH];
         int n;
-        while (System.nanoTime() < giveUp
-                && (n = read(scratch, 0, scratch.length, millisAtLeastOne(interByteNanos))) > 0) {
-            int keep = Math.min(n, buffer.length - total);
-            System.arraycopy(scratch, 0, buffer, total, keep);
-            total += keep;
+        // a full buffer ends the reading: what follows stays on the link for the next read, nothing is dropped
+        while (total < buffer.length && System.nanoTime() < giveUp
+                && (n = read(buffer, total, buffer.length - total, millisAtLeastOne(interByteNanos))) > 0) {
+            total += n;
             lineQuietSince = System.nanoTime();
         }
         return total;
@@ -573,13 +594,19 @@ final class RtuMaster {
         FrameLength lengths = FrameLengths.responseTo(Arrays.copyOfRange(lastSent, 1, lastSent.length - 2));
         int start = 0;
         boolean pieceReported = false;
-        while (start + 2 <= have) {
+        while (start < have) {
             int address = buffer[start] & 0xFF;
+            if (start + 1 == have) {
+                if (!pieceReported) {
+                    disturbed(address, false); // a piece of one byte: perhaps a reply cut after its address
+                }
+                break;
+            }
             if (address >= 1 && address <= 247) {
                 if (start + 4 <= have) {
                     byte[] rest = Arrays.copyOfRange(buffer, start, have);
-                    int length = lengths.of(rest, rest.length);
-                    if (length >= 4 && length <= rest.length && Crc16.isValidFrame(rest, length)) {
+                    int length = wholeFrame(rest, lengths);
+                    if (length > 0) {
                         stray(RtuFrame.decode(rest, length));
                         start += length;
                         pieceReported = false;
@@ -598,10 +625,30 @@ final class RtuMaster {
     }
 
     /**
-     * Whether the bytes at {@code start} begin like a reply to the last request: an address, then its function
-     * code (or its exception), and for identification the MEI type 0x0E, so that noise rarely passes.
+     * The length of the whole frame at the start of {@code bytes}, measured as a reply to the last request or,
+     * failing that, as an identification reply (a late answer to a probe may come while anything else is asked);
+     * 0 when there is none.
+     */
+    private static int wholeFrame(byte[] bytes, FrameLength lastRequest) {
+        for (FrameLength lengths : new FrameLength[] {lastRequest, IDENTIFICATION_REPLY}) {
+            int length = lengths.of(bytes, bytes.length);
+            if (length >= 4 && length <= bytes.length && Crc16.isValidFrame(bytes, length)) {
+                return length;
+            }
+        }
+        return 0;
+    }
+
+    /**
+     * Whether the bytes at {@code start} begin like a reply to the last request (an address, then its function
+     * code or its exception, and for identification the MEI type 0x0E, so that noise rarely passes) or like an
+     * identification reply, the answer to a probe that may come late while anything else is asked.
      */
     private boolean startsLikeAReply(int start, int have) {
+        if (start + 2 < have && buffer[start + 1] == (byte) FunctionCodes.ENCAPSULATED_INTERFACE
+                && (buffer[start + 2] & 0xFF) == FunctionCodes.MEI_READ_DEVICE_ID) {
+            return true;
+        }
         int requested = lastSent[1] & 0xFF;
         if ((buffer[start + 1] & 0x7F) != (requested & 0x7F)) {
             return false;

@@ -381,6 +381,50 @@ class RtuMasterTest {
     }
 
     @Test
+    void aMisaddressedAnswerAlsoNamesTheAddressItCameFromAsDisturbed() {
+        // the frame may be a module at 5 set to 6, or 6's late reply after its debt was paid: exploration asks 6 once
+        // more (silence there means nobody), so neither a phantom nor a lost module results
+        ScriptedBusLink link = new ScriptedBusLink(request -> request[0] == 5 ? List.of(frame(6, BUMPERS_REPLY))
+                : List.of());
+        RtuMaster master = master(link);
+        List<String> disturbed = new ArrayList<>();
+        master.onDisturbance((address, heard) -> disturbed.add(address + (heard ? " heard" : " disturbed")));
+        assertThrows(BusProtocolException.class, () -> master.call(5, READ_BUMPERS, POLICY));
+        assertTrue(disturbed.contains("6 disturbed"), disturbed.toString());
+        assertEquals(List.of(), strays);
+    }
+
+    @Test
+    void aLateIdentificationReplyRightBeforeAnotherReplyIsHeardNotMergedIntoNoise() {
+        // at a mismatched baud rate a probe's reply comes while the module found before it is asked its status, with
+        // no silence between the two replies: measured as a reply to the status request it was one broken piece
+        byte[] identification = frame(9, HexFormat.of().parseHex("2b0e01010000010003414243"));
+        byte[] status = frame(3, HexFormat.of().parseHex("110207ff"));
+        byte[] both = new byte[identification.length + status.length];
+        System.arraycopy(identification, 0, both, 0, identification.length);
+        System.arraycopy(status, 0, both, identification.length, status.length);
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of(both));
+        RtuMaster master = master(link);
+        assertArrayEquals(HexFormat.of().parseHex("110207ff"), master.call(3, Pdus.reportServerId(), POLICY));
+        assertEquals(List.of(9), strays.stream().map(RtuFrame::address).toList());
+        assertEquals(0, master.statistics().crcErrors());
+        assertEquals(1, master.statistics().transactions());
+    }
+
+    @Test
+    void aReplyCutAfterItsAddressByteLeavesThatAddressDisturbed() {
+        // a stall right after the first byte: one byte is no frame, but it names who started to answer
+        ScriptedBusLink link = new ScriptedBusLink(request -> List.of());
+        RtuMaster master = master(link);
+        List<Integer> disturbed = new ArrayList<>();
+        master.onDisturbance((address, heard) -> disturbed.add(address));
+        RtuMaster.CallPolicy scan = new RtuMaster.CallPolicy(Duration.ofMillis(5), 3, false);
+        link.respondWith(request -> request[0] == 2 ? List.of(new byte[] {9}) : List.of());
+        assertThrows(BusException.class, () -> master.call(2, READ_BUMPERS, scan));
+        assertTrue(disturbed.contains(9), "the address byte of the cut piece: " + disturbed);
+    }
+
+    @Test
     void aLateReplyFromAnotherAddressBeforeOursIsStillAStray() {
         // the frame from 9 owes nothing (its request is long forgotten), but address 2 answers: 9 was just late
         ScriptedBusLink link = new ScriptedBusLink(request -> List.of(frame(9, BUMPERS_REPLY),

@@ -24,7 +24,12 @@ public record AddressProblem(int address, Kind kind, String message) {
         /** The module's NodeID has no description in the catalogue, or an unusable one. */
         UNKNOWN_NODE_ID,
         /** The serial link failed while talking to this address. */
-        LINK_ERROR
+        LINK_ERROR,
+        /**
+         * A module answered here, or exchanges with the address were disturbed, and it could not be asked again
+         * undisturbed before exploration gave up asking: a module may be there.
+         */
+        DISTURBED
     }
 
     @Override

@@ -10,6 +10,8 @@ import java.util.OptionalLong;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Pattern;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import robotworld.bus.AdapterEchoException;
 import robotworld.bus.BusCrcException;
 import robotworld.bus.BusException;
@@ -35,6 +37,8 @@ import robotworld.description.RobotDescriptionDocument;
  * recognised by its address, and the module is asked again with the normal timeout after the scan.
  */
 public final class RobotExplorer {
+
+    private static final Logger LOG = LoggerFactory.getLogger(RobotExplorer.class);
 
     /** The Modbus unicast address range. */
     public static final int FIRST_ADDRESS = 1;
@@ -88,16 +92,23 @@ public final class RobotExplorer {
         RobotDescriptionBuilder.checkNames(robotName, host);
         long started = System.nanoTime();
         Scan scan = new Scan(listener);
-        Set<Integer> late = new TreeSet<>();
-        Set<Integer> disturbed = new TreeSet<>();
+        Set<Integer> late = scan.late;
+        Set<Integer> disturbed = scan.disturbed;
         bus.onStrayFrame(frame -> {
             if (frame.address() >= firstAddress && frame.address() <= lastAddress) {
-                late.add(frame.address());
+                scan.touched(frame.address());
+                if (late.add(frame.address())) {
+                    LOG.debug("address {}: heard (a late reply)", frame.address());
+                }
             }
         });
         bus.onDisturbance((heard, address) -> {
             if (address >= firstAddress && address <= lastAddress) {
-                (heard ? late : disturbed).add(address); // heard: the start of its reply came, so it is there
+                scan.touched(address);
+                // heard: the start of its reply came, so it is there
+                if ((heard ? late : disturbed).add(address)) {
+                    LOG.debug("address {}: {}", address, heard ? "heard (the start of a cut reply)" : "disturbed");
+                }
             }
         });
         try {
@@ -119,19 +130,24 @@ public final class RobotExplorer {
 
     /**
      * Asks again, with the normal timeout, every address that answered late (a failure there is reported) and
-     * every address whose exchange was disturbed (silence there means nobody), round after round while asking
-     * brings new late replies or disturbances to light.
+     * every address whose exchange was disturbed (silence there means nobody, but only silence in an exchange that
+     * nothing disturbed), round after round while asking brings new late replies or disturbances to light. What is
+     * still open after the last round is reported, never dropped.
      */
     private void askAgainUntilSettled(Scan scan, Set<Integer> late, Set<Integer> disturbed) {
         for (int round = 0; round < MAX_ASK_AGAIN_ROUNDS && !scan.linkGone(); round++) {
-            Set<Integer> todo = new TreeSet<>(late);
-            todo.addAll(disturbed);
-            todo.removeIf(scan::settled);
+            Set<Integer> todo = scan.open();
             if (todo.isEmpty()) {
                 return;
             }
+            LOG.debug("asking again, round {}: {} (heard: {})", round + 1, todo, late);
             for (int address : todo) {
                 scan.askAgain(address, late.contains(address));
+            }
+        }
+        if (!scan.linkGone()) {
+            for (int address : scan.open()) {
+                scan.unsettled(address, late.contains(address));
             }
         }
     }
@@ -146,6 +162,14 @@ public final class RobotExplorer {
         private final List<AddressProblem> problems = new ArrayList<>();
         private final List<String> notes = new ArrayList<>();
         private final Set<Integer> settled = new HashSet<>();
+        /** Addresses heard answering (a late reply, or the start of one): a module is there. */
+        final Set<Integer> late = new TreeSet<>();
+        /** Addresses whose exchange was disturbed: perhaps a module is there. */
+        final Set<Integer> disturbed = new TreeSet<>();
+        /** Disturbed addresses that were asked again and stayed silent in an undisturbed exchange: nobody there. */
+        private final Set<Integer> absent = new HashSet<>();
+        /** Per address, how often bytes from or for it were heard or disturbed (to tell a quiet exchange). */
+        private final java.util.Map<Integer, Integer> touches = new java.util.HashMap<>();
         private final Set<String> names = new HashSet<>();
         private int linkFailures;
         /** The adapter echoes and echo cancellation is off: every address would fail the same way. */
@@ -178,6 +202,29 @@ public final class RobotExplorer {
             return settled.contains(address);
         }
 
+        /** Something was heard from or about {@code address}: any silence it showed before proves nothing more. */
+        void touched(int address) {
+            touches.merge(address, 1, Integer::sum);
+            absent.remove(address);
+        }
+
+        /** Heard or disturbed addresses not yet found, reported, or shown to be empty. */
+        Set<Integer> open() {
+            Set<Integer> todo = new TreeSet<>(late);
+            todo.addAll(disturbed);
+            todo.removeIf(address -> settled.contains(address) || !late.contains(address) && absent.contains(address));
+            return todo;
+        }
+
+        /** An address still open when the rounds of asking again are used up: reported, not dropped. */
+        void unsettled(int address, boolean answered) {
+            settled.add(address);
+            problem(address, AddressProblem.Kind.DISTURBED, (answered ? "a module answered here during the scan"
+                    : "exchanges with this address were disturbed (cut short, garbled, or crossed by other replies)")
+                    + ", but it could not be asked again undisturbed in " + MAX_ASK_AGAIN_ROUNDS + " rounds; explore "
+                    + "again, and if this persists check the line (baud rate, termination, noise)");
+        }
+
         /**
          * An address asked again with the normal timeout.
          *
@@ -187,6 +234,7 @@ public final class RobotExplorer {
             if (settled.contains(address)) {
                 return;
             }
+            int touchedBefore = touches.getOrDefault(address, 0);
             try {
                 // a module heard late gets every retry; an address only disturbed, one ask (silence: nobody there)
                 DeviceIdentification identity = answered ? bus.identify(address) : bus.reprobe(address);
@@ -196,6 +244,12 @@ public final class RobotExplorer {
                 if (answered) {
                     settled.add(address);
                     fail(address, e);
+                } else if (touches.getOrDefault(address, 0) == touchedBefore) {
+                    absent.add(address);
+                    LOG.debug("address {}: silent when asked again: nobody there", address);
+                } else {
+                    // an attempt was cut or garbled before the silence: that silence proves nothing, ask again
+                    LOG.debug("address {}: asked again, disturbed again", address);
                 }
             } catch (BusException e) {
                 settled.add(address);

@@ -45,6 +45,9 @@ public final class ExplorationSoak {
     }
 
     private static int run(String label, SimRobotConfig config, boolean troubled, int scans) throws Exception {
+        if (scans <= 0) {
+            return 0; // this part was left out (-Dsoak.scans=0 or -Dsoak.mismatchScans=0)
+        }
         System.out.println(label + ", " + scans + " full scans");
         int lost = 0;
         int[] found = new int[scans];
