@@ -81,8 +81,16 @@ public final class ReplyPacing {
             answering++;
             OptionalLong median = medianCharacterNanos(slot);
             if (median.isPresent() && median.getAsLong() >= 2 * characterNanos) {
+                // the rate from this address's fastest slow frame: a stall (a busy machine, either end) only ever
+                // stretches a frame, so the median of stretched frames would name too slow a rate
+                long fastest = Long.MAX_VALUE;
+                for (long sample : samples(slot)) {
+                    if (sample >= 2 * characterNanos) {
+                        fastest = Math.min(fastest, sample);
+                    }
+                }
                 slow = Arrays.copyOf(slow, slow.length + 1);
-                slow[slow.length - 1] = median.getAsLong();
+                slow[slow.length - 1] = fastest;
             }
         }
         if (slow.length == 0 || 2 * slow.length <= answering) {

@@ -29,6 +29,18 @@ class ReplyPacingTest {
     }
 
     @Test
+    void stallsThatStretchMostFramesDoNotNameTooSlowARate() {
+        ReplyPacing pacing = new ReplyPacing(CHARACTER_NANOS);
+        for (int address = 1; address <= 4; address++) {
+            pacing.frameReceived(address, 21, 5, 20 * AT_9600);
+            for (int frame = 0; frame < 3; frame++) {
+                pacing.frameReceived(address, 21, 5, 2 * 20 * AT_9600); // stretched to twice its time by stalls
+            }
+        }
+        assertEquals(OptionalLong.of(9600), pacing.slowerLineBaud(10));
+    }
+
+    @Test
     void aFewTricklingModulesAmongCleanOnesAreNoMismatch() {
         ReplyPacing pacing = new ReplyPacing(CHARACTER_NANOS);
         pacing.frameReceived(1, 21, 21, 20 * 1_000_000L); // a byte per ms
