@@ -67,7 +67,7 @@ public final class SimWorld implements AutoCloseable {
         server = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200));
         robot = SimulatedRobot.create(SimRobotConfigReader.parse(CONFIG, "recording test robot"));
         bus = new RS485Bus(robot.serve("tcp://127.0.0.1:0"), SerialSettings.eightNoneOne(115_200),
-                BusTiming.defaults().withResponseTimeout(Duration.ofMillis(250)).withAttempts(2)
+                BusTiming.defaults().withResponseTimeout(Duration.ofMillis(1000)).withAttempts(2)
                         .withFrameGap(Duration.ZERO));
         feed = GroundTruthFeed.start(robot, ROBOT, space(), Duration.ofMillis(50));
         XVSMRuntime provider = host("robot-pc");
