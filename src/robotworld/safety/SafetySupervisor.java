@@ -9,11 +9,15 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Future;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -342,6 +346,11 @@ public final class SafetySupervisor implements AutoCloseable {
 
     // ----- the link to the space -----
 
+    /** How long serving a module waits for the stop-request watch to be in place before going on. */
+    private static final long FIRST_SUBSCRIPTION_WAIT_MILLIS = 5_000;
+
+    private volatile Future<?> subscribing;
+
     private void startWatching() {
         if (watching || space == null) {
             return;
@@ -353,7 +362,27 @@ public final class SafetySupervisor implements AutoCloseable {
             watching = true;
             periodic.add(link.scheduleWithFixedDelay(this::poll, POLL_MILLIS, POLL_MILLIS, TimeUnit.MILLISECONDS));
             watch.scheduleWithFixedDelay(this::check, CHECK_MILLIS, CHECK_MILLIS, TimeUnit.MILLISECONDS);
-            link.execute(this::subscribeToStopRequests);
+            subscribing = link.submit(this::subscribeToStopRequests);
+        }
+        awaitFirstSubscription();
+    }
+
+    /**
+     * Waits (a bounded time) until the stop-request watch is in place, so that a program serving a module hears a
+     * {@code rwe stop} issued right after it started; a space that does not answer in time leaves the heartbeat
+     * to subscribe later.
+     */
+    private void awaitFirstSubscription() {
+        Future<?> first = subscribing;
+        if (first == null) {
+            return;
+        }
+        try {
+            first.get(FIRST_SUBSCRIPTION_WAIT_MILLIS, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (ExecutionException | TimeoutException | CancellationException e) {
+            LOG.debug("{}: the stop-request watch is not in place yet: {}", ownId, e.toString());
         }
     }
 

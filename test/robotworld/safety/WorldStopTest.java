@@ -15,10 +15,15 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import robotworld.bus.BusTiming;
+import robotworld.bus.MotorModuleProxy;
+import robotworld.bus.RS485Bus;
+import robotworld.bus.SerialSettings;
 import robotworld.explorer.cli.Rwe;
 import robotworld.space.Capi;
 import robotworld.space.remote.RemoteSpace;
 import robotworld.xvsm.ActuatorStoppedException;
+import robotworld.xvsm.XVSMMotorModuleLocal;
 import robotworld.xvsm.XVSMMotorModuleRemote;
 import robotworld.xvsm.XVSMRuntime;
 
@@ -142,6 +147,24 @@ class WorldStopTest {
             assertEquals(result.request().id(), record.request());
             assertEquals("asked by ops-laptop (test): why not", record.reason());
             assertTrue(record.stoppedBy().startsWith("robot-pc#"), record.toString());
+        }
+    }
+
+    @Test
+    void aProgramHearsAStopIssuedTheMomentItServesItsFirstActuator() throws Exception {
+        for (int round = 0; round < 5; round++) {
+            try (XVSMRuntime robot = XVSMRuntime.connect(rig.spaceUrl, "robot-pc");
+                 Capi ops = RemoteSpace.open(rig.space.uri())) {
+                SafetyRig.relax(robot);
+                RS485Bus bus = robot.own(new RS485Bus(rig.busPort, SerialSettings.eightNoneOne(115_200),
+                        BusTiming.defaults().withFrameGap(Duration.ZERO)));
+                robot.own(new XVSMMotorModuleLocal(robot, SafetyRig.ROBOT, SafetyRig.MOTOR,
+                        new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
+                // no pause: the stop is asked as soon as the module is served
+                WorldStop.Result result = WorldStop.stop(ops, "ops", "round " + round, List.of(
+                        new WorldStop.Target(SafetyRig.ROBOT, SafetyRig.MOTOR, true)), Duration.ofSeconds(30));
+                assertTrue(result.complete(), "round " + round + ": " + result);
+            }
         }
     }
 }
