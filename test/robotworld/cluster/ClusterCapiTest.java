@@ -11,8 +11,9 @@ import robotworld.space.Capi;
 import robotworld.space.contract.CapiContractSuite;
 
 /**
- * The whole {@link Capi} contract, unchanged, against a space kept by a 3-member cluster, each call of a test going
- * to the next member: blocked operations, their wake-ups, notifications and naming all cross members.
+ * The whole {@link Capi} contract (its concurrency group at half its volume) against a space kept by a 3-member
+ * cluster, each call of a test going to the next member: blocked operations, their wake-ups, notifications and
+ * naming all cross members.
  */
 class ClusterCapiTest extends CapiContractSuite {
 
@@ -28,6 +29,12 @@ class ClusterCapiTest extends CapiContractSuite {
         if (cluster != null) {
             cluster.close();
         }
+    }
+
+    /** Every operation is an entry processor on a partition that may live on another member: half the volume. */
+    @Override
+    protected double concurrencyVolume() {
+        return 0.5;
     }
 
     /** A fresh space (its own maps in the cluster) with one handle per member. */

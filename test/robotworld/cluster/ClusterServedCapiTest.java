@@ -26,10 +26,10 @@ import robotworld.space.remote.RemoteSpace;
 import robotworld.space.server.SpaceServer;
 
 /**
- * The whole {@link Capi} contract, unchanged, against a 3-member cluster served over HTTP: a space server in front
- * of each member, a remote client of each server, and every call of a test going to the next client. Crefs one
- * server hands out work on the others; blocked operations wait without threads on whichever member their client
- * talks to.
+ * The whole {@link Capi} contract (its concurrency group at a third of its volume) against a 3-member cluster
+ * served over HTTP: a space server in front of each member, a remote client of each server, and every call of a
+ * test going to the next client. Crefs one server hands out work on the others; blocked operations wait without
+ * threads on whichever member their client talks to.
  */
 class ClusterServedCapiTest extends CapiContractSuite {
 
@@ -45,6 +45,12 @@ class ClusterServedCapiTest extends CapiContractSuite {
         if (cluster != null) {
             cluster.close();
         }
+    }
+
+    /** Every call crosses a client, a server and up to two members: a third of the stress volume. */
+    @Override
+    protected double concurrencyVolume() {
+        return 1.0 / 3;
     }
 
     @Override

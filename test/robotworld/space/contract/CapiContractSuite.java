@@ -13,6 +13,14 @@ public abstract class CapiContractSuite {
     /** A new, empty space of the implementation under test. */
     protected abstract Capi open(int notificationQueue);
 
+    /**
+     * The share of the concurrency group's full operation counts this implementation runs (1 = all); see
+     * {@link ConcurrencyContract#volume(int)}.
+     */
+    protected double concurrencyVolume() {
+        return 1.0;
+    }
+
     @Nested
     class Naming extends NamingContract {
         @Override
@@ -66,6 +74,11 @@ public abstract class CapiContractSuite {
         @Override
         protected Capi newSpace(int notificationQueue) {
             return open(notificationQueue);
+        }
+
+        @Override
+        protected int volume(int full) {
+            return Math.max(1, (int) Math.round(full * concurrencyVolume()));
         }
     }
 }
