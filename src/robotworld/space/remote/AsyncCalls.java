@@ -378,7 +378,7 @@ final class AsyncCalls implements Runnable {
                 if (kind == WireError.UNAVAILABLE) {
                     // whether it took effect is not known: settle it like a broken connection
                     if (connectedTo != null) {
-                        owner.failover(connectedTo);
+                        owner.failover(connectedTo, "it could not complete the call: " + answer.message);
                     }
                     cancelOnServer();
                     finish(null, new robotworld.space.SpaceUnavailableException(owner.url(), answer.message, null));
@@ -460,7 +460,7 @@ final class AsyncCalls implements Runnable {
             ackHeader = null;
             boolean stale = reused && attempt == 0;
             if (!stale && connectedTo != null) {
-                owner.failover(connectedTo); // with several servers, the cancel and what follows go to the next
+                owner.failover(connectedTo, e); // with several servers, the cancel and what follows go to the next
             }
             if (sent) {
                 cancelOnServer(); // whatever the lost take removed goes back

@@ -191,7 +191,7 @@ final class EventStream {
                 if (!closed) {
                     LOG.log(System.Logger.Level.DEBUG, "notification stream broke: " + e);
                     if (e instanceof IOException && stream == null) {
-                        owner.failover(used); // its server does not answer: with several, try the next one
+                        owner.failover(used, e); // its server does not answer: with several, try the next one
                     }
                 }
             } finally {

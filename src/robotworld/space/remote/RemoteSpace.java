@@ -87,7 +87,8 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
     /** The servers of the space, in the order given; calls go to the current one and fail over to the next. */
     private final List<Endpoint> endpoints;
-    private volatile int current;
+    /** Which server is current, and which failed lately (guarded by this). */
+    private final ServerRotation rotation;
     private volatile Endpoint endpoint;
     final Options options;
     final WireContext wire;
@@ -119,6 +120,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             all.add(Endpoint.of(url, options.token()));
         }
         this.endpoints = List.copyOf(all);
+        this.rotation = new ServerRotation(endpoints.size());
         this.endpoint = endpoints.get(0);
         this.options = options;
         this.wire = WireContext.of(new WireLimits(Integer.MAX_VALUE - 64, 256, Integer.MAX_VALUE - 64,
@@ -181,10 +183,16 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     }
 
     /**
-     * The server at {@code failed} did not answer (or is stopping): later calls go to the next server in the list.
-     * Nothing changes if there is only one, or another call has already moved on.
+     * The server at {@code failed} could not be reached, or answered that it could not complete a call (or is
+     * stopping), for the reason {@code why}: later calls go to the next server in the list that has not failed
+     * lately ({@link ServerRotation}). Nothing changes if there is only one, or another call has already moved on.
      */
-    void failover(Endpoint failed) {
+    void failover(Endpoint failed, Object why) {
+        failover(failed, !(why instanceof ServerUnavailable || why instanceof String), why);
+    }
+
+    /** As {@link #failover(Endpoint, Object)}, saying whether the server could not be reached at all. */
+    void failover(Endpoint failed, boolean couldNotBeReached, Object why) {
         if (endpoints.size() < 2 || closed) {
             return;
         }
@@ -193,8 +201,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             if (endpoint != failed) {
                 return; // moved on already
             }
-            current = (current + 1) % endpoints.size();
-            endpoint = endpoints.get(current);
+            endpoint = endpoints.get(rotation.failed(System.nanoTime(), couldNotBeReached));
             old = pool;
             pool = new ConnectionPool(endpoint, options.connectTimeoutMillis(), options.maxIdleConnections());
             retired.add(old);
@@ -203,8 +210,9 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             }
         }
         old.discardIdle();
-        LOG.log(System.Logger.Level.INFO, "space server " + failed.url() + " does not answer; going on with "
-                + endpoint.url());
+        LOG.log(System.Logger.Level.INFO, "space server " + failed.url() + (couldNotBeReached ? " does not answer ("
+                : " cannot serve (") + (why instanceof Throwable t && t.getMessage() != null ? t.getMessage() : why)
+                + "); going on with " + endpoint.url());
     }
 
     @Override
@@ -645,7 +653,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                     }
                     if (kind == WireError.STOPPING || kind == WireError.BUSY) {
                         if (kind == WireError.STOPPING) {
-                            failover(used); // another server of the space (if any) goes on
+                            failover(used, true, "it is stopping"); // another server of the space (if any) goes on
                         }
                         if (answer.written) {
                             return answer; // the write happened: the caller takes on its own
@@ -694,7 +702,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                         && !connection.hasBufferedInput();
                 pool.discardIdle(); // a broken connection usually means they are all broken (server restart)
                 if (!stale) {
-                    failover(used); // with several servers, settle and repeat the call with the next one
+                    failover(used, e); // with several servers, settle and repeat the call with the next one
                 }
                 if (sent && (retry == Retry.REMOVAL || retry == Retry.WRITE || composite || !stale)) {
                     Answer settled = settleLostCall(operation, callId, retry, networkDeadline, e);
@@ -807,7 +815,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             return parseAnswer(response);
         } catch (IOException e) {
             if (!closed) {
-                failover(used); // a cancel or confirmation that cannot reach its server goes to the next one
+                failover(used, e); // a cancel or confirmation that cannot reach its server goes to the next one
             }
             return null;
         } catch (SpaceException e) {
@@ -838,7 +846,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             if (connection != null) {
                 pool.discard(connection);
             }
-            failover(used);
+            failover(used, e);
             return false;
         }
     }
@@ -877,7 +885,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                     pool.discard(connection);
                 }
                 lastFailure = e;
-                failover(used);
+                failover(used, e);
             }
             if (System.nanoTime() - deadline >= 0) {
                 throw new SpaceUnavailableException(used.url(), endpoints.size() == 1 ? "cannot reach the space server"
