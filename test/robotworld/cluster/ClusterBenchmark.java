@@ -18,26 +18,31 @@ import robotworld.space.Entry;
 import robotworld.space.Item;
 import robotworld.space.Order;
 import robotworld.space.Selector;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
 import robotworld.space.Timeout;
 import robotworld.space.Tuple;
+import robotworld.space.remote.RemoteSpace;
+import robotworld.space.server.SpaceServer;
 import robotworld.testsupport.CpuPlacement;
 import robotworld.testsupport.TcpEcho;
 
 /**
- * What the clustered space costs and how quickly it recovers, with an embedded space and a raw TCP round trip
- * measured in the same run as baselines:
+ * What the clustered space costs and how quickly it recovers, with one space server, an embedded space and a raw
+ * TCP round trip measured in the same run as baselines:
  * <ul>
- * <li>the request/answer cycle of a module call (the caller's write-then-take, the provider's shift-then-take), with
- * caller and provider in one process on an embedded space, and on a 3-member cluster with the caller's handle on one
- * member and the provider's on another; median over runs of each run's p50 and p99, and of the ratio to the TCP p50
+ * <li>the request/answer cycle of a module call (the caller's write-then-take, the provider's shift-then-take), as
+ * programs on other computers see it: over HTTP to one space server, and over HTTP to a 3-member cluster with the
+ * caller's server in front of one member and the provider's in front of another; then in-process, on an embedded
+ * space and on cluster handles; median over runs of each run's p50 and p99, and of the ratio to the TCP p50
  * measured just before; in a child JVM with every thread on one CPU, then with threads placed by the OS;</li>
- * <li>50 concurrent clients doing write+take cycles on their own containers: throughput and cycle p50/p99;</li>
+ * <li>50 concurrent clients (a remote client each) doing write+take cycles on their own containers, against one
+ * space server and against the cluster's three servers: throughput and cycle p50/p99; the same in-process;</li>
  * <li>failover: a caller makes module calls while the member owning one of its containers crashes (Hazelcast
  * terminated: its connections close, as when its process is killed); the longest pause between two completed
  * calls, over {@code bench.kills} crashes, each on a fresh third member.</li>
  * </ul>
- * All members run in this JVM on loopback. Run with {@code ./antw bench-cluster}; {@code -Dbench.runs},
+ * All members and servers run in this JVM on loopback. Run with {@code ./antw bench-cluster}; {@code -Dbench.runs},
  * {@code -Dbench.roundTrips}, {@code -Dbench.clients}, {@code -Dbench.kills} change the sizes.
  */
 public final class ClusterBenchmark {
@@ -62,29 +67,44 @@ public final class ClusterBenchmark {
             }
         }
         try (LocalCluster cluster = LocalCluster.start(3); TcpEcho echo = new TcpEcho(16, 16);
-             EmbeddedSpace embedded = EmbeddedSpace.open()) {
+             EmbeddedSpace embedded = EmbeddedSpace.open(); EmbeddedSpace served = EmbeddedSpace.open();
+             Servers single = Servers.inFrontOf(List.of(served));
+             Servers clustered = Servers.inFrontOf(List.of(cluster.member(0).openSpace("bench"),
+                     cluster.member(1).openSpace("bench"), cluster.member(2).openSpace("bench")))) {
             ClusterSpace onFirst = cluster.member(0).openSpace("bench");
             ClusterSpace onSecond = cluster.member(1).openSpace("bench");
+            RemoteSpace singleCaller = single.client(0);
+            RemoteSpace singleProvider = single.client(0);
+            RemoteSpace clusterCaller = clustered.client(0);
+            RemoteSpace clusterProvider = clustered.client(1);
             System.out.printf("%nModule-call cycle, %s:%n", CpuPlacement.describe());
-            warmUp(embedded, onFirst, onSecond, echo);
+            warmUp(echo, List.of(embedded, onFirst, singleCaller, clusterCaller),
+                    List.of(embedded, onSecond, singleProvider, clusterProvider), onFirst);
             List<Row> rows = new ArrayList<>();
             rows.add(measure("raw TCP loopback round trip (16-byte echo)", echo, () -> tcpRoundTrips(echo)));
+            rows.add(measure("1 space server over HTTP, caller and provider remote", echo,
+                    () -> moduleCalls(singleCaller, singleProvider)));
+            rows.add(measure("3-member cluster over HTTP, servers of different members", echo,
+                    () -> moduleCalls(clusterCaller, clusterProvider)));
             rows.add(measure("embedded space, caller and provider in one process", echo,
                     () -> moduleCalls(embedded, embedded)));
-            rows.add(measure("3-member cluster, caller and provider on different members", echo,
+            rows.add(measure("3-member cluster in-process, caller and provider on different members", echo,
                     () -> moduleCalls(onFirst, onSecond)));
-            rows.add(measure("3-member cluster, write+take cycle on one member", echo,
+            rows.add(measure("3-member cluster in-process, write+take cycle on one member", echo,
                     () -> writeTakeCycles(onFirst)));
             print(rows);
             if (!latencyOnly) {
                 System.out.printf("%n%d concurrent clients, write+take cycles on their own containers, %d ms per"
                         + " run, threads placed by the OS:%n", CLIENTS, CONCURRENT_MILLIS);
+                concurrentClients("1 space server over HTTP", single.clients(CLIENTS));
+                concurrentClients("3-member cluster over HTTP, clients spread over its servers",
+                        clustered.clients(CLIENTS));
                 concurrentClients("embedded space", List.of(embedded));
                 List<Capi> handles = new ArrayList<>();
                 for (ClusterMember member : cluster.members) {
                     handles.add(member.openSpace("bench"));
                 }
-                concurrentClients("3-member cluster, clients spread over the members", handles);
+                concurrentClients("3-member cluster in-process, clients spread over the members", handles);
                 failover(cluster);
             }
         }
@@ -305,13 +325,55 @@ public final class ClusterBenchmark {
     private record Row(String name, double p50, double p99, double ratio) {
     }
 
-    private static void warmUp(Capi embedded, Capi first, Capi second, TcpEcho echo) throws Exception {
+    private static void warmUp(TcpEcho echo, List<Capi> callers, List<Capi> providers, Capi cycles)
+            throws Exception {
         long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.getLong("bench.warmupSeconds", 8));
         while (System.nanoTime() < until) {
             tcpRoundTrips(echo);
-            moduleCalls(embedded, embedded);
-            moduleCalls(first, second);
-            writeTakeCycles(first);
+            for (int i = 0; i < callers.size(); i++) {
+                moduleCalls(callers.get(i), providers.get(i));
+            }
+            writeTakeCycles(cycles);
+        }
+    }
+
+    /**
+     * Space servers on loopback in front of the given spaces, and remote clients of them, as programs on other
+     * computers would have: one client each, closed with the servers.
+     */
+    private static final class Servers implements AutoCloseable {
+        private final List<SpaceServer> servers = new ArrayList<>();
+        private final List<RemoteSpace> clients = new ArrayList<>();
+
+        static Servers inFrontOf(List<? extends SpaceEngine> spaces) {
+            Servers started = new Servers();
+            for (SpaceEngine space : spaces) {
+                started.servers.add(SpaceServer.start(space, SpaceServer.Options.defaults().port(0)
+                        .stopGraceMillis(100)));
+            }
+            return started;
+        }
+
+        /** A new client of server {@code index}. */
+        RemoteSpace client(int index) {
+            RemoteSpace client = RemoteSpace.open(servers.get(index).uri(), RemoteSpace.Options.defaults());
+            clients.add(client);
+            return client;
+        }
+
+        /** {@code count} new clients, spread over the servers in turn. */
+        List<Capi> clients(int count) {
+            List<Capi> made = new ArrayList<>();
+            for (int c = 0; c < count; c++) {
+                made.add(client(c % servers.size()));
+            }
+            return made;
+        }
+
+        @Override
+        public void close() {
+            clients.forEach(RemoteSpace::close);
+            servers.forEach(SpaceServer::stop);
         }
     }
 
