@@ -139,8 +139,11 @@ public final class Failures {
         String port = failure.port();
         String device = failure.kind().equals("x10") ? "the CM11A" : "the robot's bus adapter";
         String choose = choosePort(fixes, new PortFailure(failure.kind(), port, failure.property()));
-        String simulator = failure.kind().equals("x10") ? "rwe simulate cm11a --port tcp://127.0.0.1:5030"
-                : "rwe simulate robot --config FILE --port tcp://127.0.0.1:5020";
+        // the simulator to start is the one on the port that was asked for, if that is a TCP port
+        String simulatorPort = port != null && port.startsWith("tcp://") ? port
+                : failure.kind().equals("x10") ? "tcp://127.0.0.1:5030" : "tcp://127.0.0.1:5020";
+        String simulator = failure.kind().equals("x10") ? "rwe simulate cm11a --port " + simulatorPort
+                : "rwe simulate robot --config FILE --port " + simulatorPort;
         String message = cause == null ? "" : String.valueOf(cause.getMessage());
         if (cause instanceof InvalidPortNameException) {
             return List.of(who + "'" + port + "' is not a port: " + firstLine(message),

@@ -69,6 +69,10 @@ class FailuresTest {
                 new ConnectException("Connection refused"))));
         assertEquals("CaterpillarRobot: nothing answers at tcp://127.0.0.1:5020 (connection refused).", lines.get(0));
         assertTrue(lines.get(1).contains("rwe simulate robot") && lines.get(1).contains("-Drwe.port.CaterpillarRobot.bus"));
+        // the simulator suggested is the one on the port that was refused
+        List<String> other = lines(port("x10", "tcp://127.0.0.1:6031", new IOException("cannot connect",
+                new ConnectException("Connection refused"))));
+        assertTrue(other.get(1).contains("rwe simulate cm11a --port tcp://127.0.0.1:6031"), other.toString());
     }
 
     @Test

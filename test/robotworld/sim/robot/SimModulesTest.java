@@ -45,6 +45,15 @@ class SimModulesTest {
         assertEquals("03 04 01 F4 01 F4", ask(motor, "03 00 00 00 02"));
     }
 
+    /** Diagnostics 0x08, sub-function 0x0000 (return query data): every data word comes back, however many. */
+    @Test
+    void theEchoDiagnosticReturnsEveryDataWord() {
+        assertEquals("08 00 00 A5 37", ask(motor, "08 00 00 A5 37"), "one word");
+        assertEquals("08 00 00 12 34 AB CD 00 01", ask(motor, "08 00 00 12 34 AB CD 00 01"), "three words");
+        assertEquals("08 00 00 00 01 00 02 00 03 00 04 00 05", ask(ir, "08 00 00 00 01 00 02 00 03 00 04 00 05"),
+                "five words, another module type");
+    }
+
     @Test
     void motorSpeedsOutsideTheRangeAreRefused() {
         assertEquals("86 03", ask(motor, "06 00 00 03 E9"), "1001 per-mille");
