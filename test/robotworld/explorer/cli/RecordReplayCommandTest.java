@@ -11,8 +11,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import com.fasterxml.jackson.databind.JsonNode;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import robotworld.recording.mcap.McapPeer;
 import robotworld.space.ContainerRef;
 import robotworld.space.ContainerSpec;
 import robotworld.space.EmbeddedSpace;
@@ -81,6 +83,7 @@ class RecordReplayCommandTest {
         assertTrue(replay.contains("# REPLAY of run.mcap"), replay);
         assertTrue(replay.matches("(?s).*CaterpillarRobot\\s+Motor-Controller\\s+setMotor\\s+.*500.*"), replay);
         assertTrue(replay.contains("replay space at http://127.0.0.1:"), replay);
+        assertTheReferenceReaderAgrees(file);
     }
 
     @Test
@@ -145,6 +148,29 @@ class RecordReplayCommandTest {
         assertTrue(info.matches("(?s).*/CaterpillarRobot/Motor-Controller\\s+rwe.ModuleTraffic\\s+json\\s+2\\n.*"),
                 info);
         assertTrue(info.contains("indexed      yes"), info);
+        assertTheReferenceReaderAgrees(file);
+    }
+
+    /**
+     * The reference Python reader (test-setup/requirements.txt) reads the file {@code rwe record} wrote, checking
+     * every CRC: a summary with statistics, a footer, the index and a linear read giving the same messages, and the
+     * two motor calls on their module's topic.
+     */
+    private static void assertTheReferenceReaderAgrees(Path file) throws Exception {
+        JsonNode found = McapPeer.require().read(file);
+        long count = found.at("/summary/statistics/message_count").asLong();
+        assertTrue(count >= 2, found.toString());
+        assertEquals(count, found.get("indexed").size(), "messages read through the index");
+        assertEquals(count, found.get("streamed").size(), "messages read as a stream");
+        assertTrue(found.get("footer").asBoolean(), "a footer");
+        assertTrue(found.at("/summary/chunk_indexes").asInt() >= 1, "chunk indexes");
+        long motorCalls = 0;
+        for (JsonNode message : found.get("indexed")) {
+            if (message.get("topic").asText().equals("/CaterpillarRobot/Motor-Controller")) {
+                motorCalls++;
+            }
+        }
+        assertEquals(2, motorCalls, "the two motor calls, as the reference reader sees them");
     }
 
     /** The message count of the last progress line, once there is one. */
