@@ -214,17 +214,29 @@ public final class Demo {
         }
     }
 
-    /** Kills the first space server (the one every program talks to first) once, halfway through the run. */
-    private void killMemberHalfway(long until) throws InterruptedException {
+    /**
+     * Kills the first space server (the one every program talks to first) once, halfway through the run; returns
+     * what the world looked like then (null when nothing was killed now).
+     */
+    private MemberKillMark killMemberHalfway(long until, Simulators sims, int bumpsSoFar)
+            throws InterruptedException {
         if (cluster == null || memberKilled) {
-            return;
+            return null;
         }
         if (System.currentTimeMillis() >= until - options.run().toMillis() / 2) {
             memberKilled = true;
+            MemberKillMark mark = new MemberKillMark(cluster.url(0), sims.robot.pose(), bumpsSoFar,
+                    sims.on.get() + sims.off.get());
             long pid = cluster.kill(0);
-            say("killed the space server " + cluster.url(0) + " (pid " + pid + ", SIGKILL) while the robot drives;"
+            say("killed the space server " + mark.url + " (pid " + pid + ", SIGKILL) while the robot drives;"
                     + " the programs go on with the other members");
+            return mark;
         }
+        return null;
+    }
+
+    /** The world when a member was killed, to tell what happened after. */
+    private record MemberKillMark(String url, Pose pose, int bumps, int switches) {
     }
 
     /** The two simulators and their ports. */
@@ -386,6 +398,13 @@ public final class Demo {
             if (!options.killControl() && (summary.lampOnFrames < 1 || summary.lampOffFrames < 1)) {
                 problems.add("the lamp was not switched on and off at the CM11A");
             }
+            if (options.clusterMembers() > 0 && !options.killControl()) {
+                if (summary.memberKill == null) {
+                    problems.add("no space server was killed (the run ended before its halfway point)");
+                } else if (summary.memberKill.distanceAfter() < 20 && summary.memberKill.bumpsAfter() < 1) {
+                    problems.add("the robot neither moved nor bumped after the space server was killed");
+                }
+            }
             if (summary.monitorAnswers < 1) {
                 problems.add("the monitor received nothing");
             }
@@ -488,10 +507,12 @@ public final class Demo {
                 return null;
             }
             int reported = 0;
+            MemberKillMark memberKill = null;
             while (System.currentTimeMillis() < until + 20_000 && controlling.isAlive()
                     && !controlling.output().contains("DEMO-END")) {
                 Thread.sleep(200);
-                killMemberHalfway(until);
+                MemberKillMark killedNow = killMemberHalfway(until, sims, reported);
+                memberKill = killedNow != null ? killedNow : memberKill;
                 long bumps = controlling.output().lines().filter(l -> l.startsWith("DEMO-BUMP")).count();
                 if (bumps > reported) {
                     reported = (int) bumps;
@@ -502,6 +523,12 @@ public final class Demo {
             summary.lampOnFrames = sims.on.get();
             summary.lampOffFrames = sims.off.get();
             String output = controlling.output();
+            if (memberKill != null) {
+                int bumpsAtEnd = (int) output.lines().filter(l -> l.startsWith("DEMO-BUMP")).count();
+                summary.memberKill = new DemoSummary.MemberKill(memberKill.url(), memberKill.pose(),
+                        bumpsAtEnd - memberKill.bumps(), sims.on.get() + sims.off.get() - memberKill.switches(),
+                        sims.robot.pose());
+            }
             readStatistics(output);
             if (output.contains("DEMO-FAILED")) {
                 throw new IllegalStateException("the control program failed; its log:\n" + controlling.tail(20));

@@ -43,6 +43,7 @@ public final class DemoSummary {
     int monitorMotor;
     int monitorStops;
     Kill kill;
+    MemberKill memberKill;
     boolean safe;
     final List<String> safeState = new ArrayList<>();
     final List<String> stops = new ArrayList<>();
@@ -128,6 +129,28 @@ public final class DemoSummary {
         return List.copyOf(stops);
     }
 
+    /**
+     * A clustered space server killed (SIGKILL) while the control program ran, and what happened in the world after
+     * it, up to the end of the run.
+     *
+     * @param url           the killed server
+     * @param atKill        the robot's pose at the kill
+     * @param bumpsAfter    front bumper contacts the control program reported after the kill
+     * @param switchesAfter X10 lamp commands at the simulated CM11A after the kill
+     */
+    public record MemberKill(String url, Pose atKill, int bumpsAfter, int switchesAfter, Pose atEnd) {
+
+        /** How far the robot got from where it was at the kill. */
+        public double distanceAfter() {
+            return atKill == null || atEnd == null ? 0 : atKill.distanceTo(atEnd);
+        }
+    }
+
+    /** The clustered space server killed mid-run, or null when the space was not clustered. */
+    public MemberKill memberKill() {
+        return memberKill;
+    }
+
     /** The kill of the control program, or null without {@code --kill-control}. */
     public Kill kill() {
         return kill;
@@ -176,6 +199,11 @@ public final class DemoSummary {
                             + "by %s", kill.millisToZero(), kill.stoppedBy()),
                     kill.atKill() == null || kill.atRest() == null ? 0 : kill.atKill().distanceTo(kill.atRest()),
                     kill.atRest());
+        }
+        if (memberKill != null) {
+            out.printf(Locale.ROOT, "member killed     %s (SIGKILL) mid-run; after it the robot moved %.0f mm, %d bumps"
+                    + " handled, %d lamp switches%n", memberKill.url(), memberKill.distanceAfter(),
+                    memberKill.bumpsAfter(), memberKill.switchesAfter());
         }
         out.println("safe state        " + (safeState.isEmpty() ? "not checked"
                 : safe ? "the robot's actuators are in their safe state (motors read 0 at the module)"
