@@ -26,8 +26,15 @@ public final class SocatPty implements AutoCloseable {
 
     /** Starts socat and waits until both links exist. Skips the calling test when socat is not installed. */
     public static SocatPty start() throws IOException, InterruptedException {
+        return startIn(Files.createTempDirectory("rwe-pty"));
+    }
+
+    /**
+     * Starts socat with its links A and B in {@code folder}: after {@link #unplug()}, a new pair in the same folder
+     * is the same device plugged in again (same names, new pseudo-terminals).
+     */
+    public static SocatPty startIn(Path folder) throws IOException, InterruptedException {
         TestPeers.requireCommand("socat", "socat");
-        Path folder = Files.createTempDirectory("rwe-pty");
         Process socat;
         try {
             socat = new ProcessBuilder("socat", "-d", "-d",
@@ -62,9 +69,13 @@ public final class SocatPty implements AutoCloseable {
         return folder.resolve("B");
     }
 
-    /** Ends socat (both ptys vanish) and removes the folder. */
-    @Override
-    public void close() throws IOException {
+    /** The folder of the links. */
+    public Path folder() {
+        return folder;
+    }
+
+    /** Ends socat: both ptys and their links vanish, as a USB adapter that is pulled out; the folder stays. */
+    public void unplug() {
         socat.destroy();
         try {
             if (!socat.waitFor(2, TimeUnit.SECONDS)) {
@@ -74,6 +85,12 @@ public final class SocatPty implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+    }
+
+    /** Ends socat (both ptys vanish) and removes the folder. */
+    @Override
+    public void close() throws IOException {
+        unplug();
         try (Stream<Path> files = Files.walk(folder)) {
             files.sorted(Comparator.reverseOrder()).forEach(path -> path.toFile().delete());
         }
