@@ -203,6 +203,8 @@ public final class ClusterKillSoak {
     private static final List<String> silentGapDetails = Collections.synchronizedList(new ArrayList<>());
 
     public static void main(String[] args) throws Exception {
+        // log lines with milliseconds, to be read against the kill times printed below
+        System.setProperty("java.util.logging.SimpleFormatter.format", "%1$tT.%1$tL %4$s %2$s: %5$s%6$s%n");
         logs = Files.createTempDirectory("rwe-kill-soak");
         System.out.printf(Locale.ROOT, "Kill -9 soak: 3 cluster members as processes (rwe space --cluster), %d hosts"
                 + " x %d threads making module calls (timeout %d s) on %d modules, %d writers, %d monitors, %d kills;"
@@ -289,8 +291,11 @@ public final class ClusterKillSoak {
                 Member dead = members.get(victim);
                 long killedAt = System.nanoTime();
                 dead.process.destroyForcibly(); // SIGKILL
+                System.out.printf(Locale.ROOT, "%tT.%<tL kill %d of member %d (%s)%n", System.currentTimeMillis(),
+                        kill + 1, victim, dead.url);
                 dead.process.waitFor(30, TimeUnit.SECONDS);
                 Thread.sleep(SETTLE_MILLIS);
+                String timeline = timeline(killedAt); // before longestPause, which trims the call times
                 long resumed = resumedAfter(killedAt);
                 resumes.add(resumed);
                 long pause = longestPause(killedAt - TimeUnit.SECONDS.toNanos(1),
@@ -300,6 +305,7 @@ public final class ClusterKillSoak {
                         + " %,d ms (%d = not within the %d ms watched); longest wait of one caller thread %,d ms; %,d calls answered so far%n", kill + 1,
                         victim, dead.address, TimeUnit.NANOSECONDS.toMillis(resumed), SETTLE_MILLIS, SETTLE_MILLIS,
                         TimeUnit.NANOSECONDS.toMillis(pause), calls.sum());
+                System.out.println("         answered calls per 250 ms from 1 s before the kill: " + timeline);
                 List<String> others = new ArrayList<>();
                 for (Member other : members) {
                     if (other != dead) {
@@ -428,6 +434,26 @@ public final class ClusterKillSoak {
             }
         }
         return TimeUnit.MILLISECONDS.toNanos(SETTLE_MILLIS);
+    }
+
+    /** Answered calls of all threads per 250 ms, from 1 s before {@code killedAt} to 5 s after it; "|" at the kill. */
+    private static String timeline(long killedAt) {
+        long bucket = TimeUnit.MILLISECONDS.toNanos(250);
+        long from = killedAt - 4 * bucket;
+        int[] counts = new int[24];
+        for (ConcurrentLinkedQueue<Long> times : answered) {
+            for (Long at : times) {
+                long index = Math.floorDiv(at - from, bucket);
+                if (index >= 0 && index < counts.length) {
+                    counts[(int) index]++;
+                }
+            }
+        }
+        StringBuilder line = new StringBuilder();
+        for (int i = 0; i < counts.length; i++) {
+            line.append(i == 4 ? " | " : i == 0 ? "" : " ").append(counts[i]);
+        }
+        return line.toString();
     }
 
     /** Per caller thread, the longest time without an answered call within [from, to]; the longest of them all. */
