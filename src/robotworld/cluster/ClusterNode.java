@@ -218,24 +218,18 @@ final class ClusterNode {
         return retrying(() -> map.get(name), deadline, uri, "lookup of '" + name + "'");
     }
 
-    /**
-     * The containers of space {@code space} that know these client calls, asking all of them in one pass: call id
-     * to container id, for the calls some container knows.
-     */
-    Map<String, String> findReceipts(String space, List<String> callIds, long deadline, URI uri) {
+    /** The container of space {@code space} that knows client call {@code callId}, asking all of them; or null. */
+    String findReceipt(String space, String callId, long deadline, URI uri) {
         IMap<String, ContainerRecord> map = containers(space);
         Map<String, Outcome> answers = retrying(() -> map.executeOnEntries(
-                ContainerCall.receipts(ContainerCall.Kind.FIND_RECEIPTS, null, List.copyOf(callIds))), deadline, uri,
-                "looking for " + callIds.size() + " call(s)");
-        Map<String, String> found = new java.util.HashMap<>();
+                ContainerCall.receipts(ContainerCall.Kind.FIND_RECEIPTS, null, List.of(callId))), deadline, uri,
+                "looking for call " + callId);
         for (Map.Entry<String, Outcome> answer : answers.entrySet()) {
-            if (answer.getValue() != null) {
-                for (String call : answer.getValue().calls) {
-                    found.putIfAbsent(call, answer.getKey());
-                }
+            if (answer.getValue() != null && !answer.getValue().calls.isEmpty()) {
+                return answer.getKey();
             }
         }
-        return found;
+        return null;
     }
 
     void createRecord(String space, ContainerRecord record, long deadline, URI uri) {

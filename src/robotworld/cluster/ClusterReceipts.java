@@ -29,8 +29,6 @@ final class ClusterReceipts implements CallReceipts {
     private static final int MAX_KNOWN = 100_000;
 
     private final ClusterSpace space;
-    /** Asks the space's containers for calls not known here, many at a time. */
-    private final ReceiptLocator locator;
     private final Map<String, String> containerOf = new ConcurrentHashMap<>();
     /** Takes and destroys held for their client's confirmation, made through this member. */
     private final Set<String> held = ConcurrentHashMap.newKeySet();
@@ -39,7 +37,6 @@ final class ClusterReceipts implements CallReceipts {
 
     ClusterReceipts(ClusterSpace space) {
         this.space = space;
-        this.locator = new ReceiptLocator(space::findReceipts);
     }
 
     /** A call of a client ran through this member on {@code container}; {@code removal}: it holds entries. */
@@ -71,19 +68,15 @@ final class ClusterReceipts implements CallReceipts {
     @Override
     public void acknowledge(List<String> callIds) {
         Map<String, List<String>> byContainer = new LinkedHashMap<>();
-        List<String> unknown = new ArrayList<>();
         for (String callId : callIds) {
             held.remove(callId);
             String container = containerOf.remove(callId);
             if (container == null) {
-                unknown.add(callId);
-            } else {
+                container = locate(callId);
+            }
+            if (container != null) {
                 byContainer.computeIfAbsent(container, key -> new ArrayList<>()).add(callId);
             }
-        }
-        if (!unknown.isEmpty()) {
-            locate(unknown).forEach((callId, container) ->
-                    byContainer.computeIfAbsent(container, key -> new ArrayList<>()).add(callId));
         }
         for (Map.Entry<String, List<String>> batch : byContainer.entrySet()) {
             space.receiptsCall(batch.getKey(), ContainerCall.Kind.ACK_RECEIPTS, batch.getValue());
@@ -152,17 +145,11 @@ final class ClusterReceipts implements CallReceipts {
         if (known != null) {
             return known;
         }
-        return locate(List.of(callId)).get(callId);
-    }
-
-    /** The containers of calls not known here, found by asking the space's containers (with other callers' calls). */
-    private Map<String, String> locate(List<String> callIds) {
         try {
-            return locator.locate(callIds);
-        } catch (SpaceException | IllegalStateException e) {
-            LOG.log(Level.WARNING, "could not look for " + callIds.size() + " call(s) in the cluster: "
-                    + e.getMessage());
-            return Map.of();
+            return space.findReceipt(callId);
+        } catch (SpaceException e) {
+            LOG.log(Level.WARNING, "could not look for call " + callId + " in the cluster: " + e.getMessage());
+            return null;
         }
     }
 }

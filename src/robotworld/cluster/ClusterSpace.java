@@ -3,7 +3,6 @@ package robotworld.cluster;
 import java.lang.System.Logger.Level;
 import java.net.URI;
 import java.util.List;
-import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -544,12 +543,9 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
         return once(id, call -> ContainerCall.receipt(kind, call, callId), allowance());
     }
 
-    /**
-     * The containers that know these client calls, asking all of this space's containers in one pass: call id to
-     * container id, for the calls some container knows.
-     */
-    Map<String, String> findReceipts(List<String> callIds) {
-        return node.findReceipts(name, callIds, allowance(), uri);
+    /** The container that knows client call {@code callId}, asking all of this space's containers; or null. */
+    String findReceipt(String callId) {
+        return node.findReceipt(name, callId, allowance(), uri);
     }
 
     /** In-process, a take needs no receipt: the entries are the result. */
