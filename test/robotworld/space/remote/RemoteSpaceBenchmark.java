@@ -31,6 +31,7 @@ import robotworld.space.server.SpaceServer;
 import redis.clients.jedis.Jedis;
 import robotworld.testsupport.CpuPlacement;
 import robotworld.testsupport.RedisPeer;
+import robotworld.testsupport.SpaceServerProcess;
 import robotworld.testsupport.TcpEcho;
 
 /**
@@ -57,6 +58,13 @@ public final class RemoteSpaceBenchmark {
 
     public static void main(String[] args) throws Exception {
         boolean latencyOnly = Arrays.asList(args).contains("latency");
+        if (Boolean.getBoolean("bench.pairsOnly")) { // -Dbench.pairsOnly=true: only the 50 pairs against Redis
+            try (SpaceServer server = SpaceServer.start(SpaceServer.Options.defaults().port(0));
+                 RedisPeer redis = RedisPeer.start()) {
+                pairs(server.uri(), redis);
+            }
+            return;
+        }
         if (!CpuPlacement.isConfined()) {
             System.out.printf("remote space benchmark: %d runs, %d round trips per run, %d concurrent clients; %s,"
                     + " %d cores%n", RUNS, ROUND_TRIPS, CLIENTS, System.getProperty("java.vm.version"),
@@ -107,7 +115,22 @@ public final class RemoteSpaceBenchmark {
             }
             if (!latencyOnly) {
                 concurrentClients(uri);
-                concurrentPairs(uri, redis);
+                pairs(uri, redis);
+            }
+        }
+    }
+
+    /** The 50 pairs against Redis, with the space server in its own process unless told otherwise. */
+    private static void pairs(URI uri, RedisPeer redis) throws Exception {
+        if (Boolean.parseBoolean(System.getProperty("bench.pairsInProcess", "false"))) {
+            System.out.printf("%nspace server for the pairs: in this JVM (-Dbench.pairsInProcess=true)%n");
+            concurrentPairs(uri, redis, 1);
+        } else {
+            // as Redis is: its own process, so its heap and collector are not the 100 clients' ones
+            try (SpaceServerProcess own = SpaceServerProcess.start(List.of("-Xmx1g"))) {
+                System.out.printf("%nspace server for the pairs: its own process (rwe space, -Xmx1g), as"
+                        + " Redis is; three warm-up runs, since its JIT starts cold%n");
+                concurrentPairs(own.uri(), redis, 3);
             }
         }
     }
@@ -411,12 +434,12 @@ public final class RemoteSpaceBenchmark {
      * {@link #PAIRS} request/answer pairs at once, each a caller and a module with containers (or Redis lists) of
      * their own, doing the module-call cycle as fast as answers come; ours and Redis alternately, 3 runs each.
      */
-    private static void concurrentPairs(URI uri, RedisPeer redis) throws Exception {
+    private static void concurrentPairs(URI uri, RedisPeer redis, int warmUpRuns) throws Exception {
         System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours and Redis"
                 + " alternately:%n", PAIRS, PAIR_MILLIS);
         List<double[]> ours = new ArrayList<>();
         List<double[]> theirs = new ArrayList<>();
-        for (int run = -1; run < 3; run++) { // run -1 warms up
+        for (int run = -warmUpRuns; run < 3; run++) { // the runs before 0 warm up
             double[] space = pairsRun(uri, null);
             double[] redisRun = redis == null ? null : pairsRun(uri, redis);
             if (run >= 0) {

@@ -1,0 +1,81 @@
+package robotworld.testsupport;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.net.URI;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * A space server in a process of its own ({@code rwe space --port 0} in a child JVM on this class path), as it runs
+ * in a lab: benchmarks that compare the space with a server that is its own process (Redis) use it, so that the
+ * clients' threads and garbage do not share a heap and a collector with the server. Close it to kill the process.
+ */
+public final class SpaceServerProcess implements AutoCloseable {
+
+    private static final Pattern LISTENING = Pattern.compile("listening on (http://\\S+)");
+
+    private final Process process;
+    private final URI uri;
+
+    private SpaceServerProcess(Process process, URI uri) {
+        this.process = process;
+        this.uri = uri;
+    }
+
+    /** Starts a server with the JVM options {@code jvm} (e.g. {@code -Xmx1g}); returns once it listens. */
+    public static SpaceServerProcess start(List<String> jvm) throws IOException {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(jvm);
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), "robotworld.explorer.cli.Rwe", "space",
+                "--port", "0"));
+        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+        BufferedReader out = new BufferedReader(new InputStreamReader(process.getInputStream(),
+                StandardCharsets.UTF_8));
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        StringBuilder said = new StringBuilder();
+        while (System.nanoTime() < deadline) {
+            String line = out.readLine();
+            if (line == null) {
+                break;
+            }
+            said.append(line).append('\n');
+            Matcher listening = LISTENING.matcher(line);
+            if (listening.find()) {
+                Thread drain = new Thread(() -> {
+                    try {
+                        while (out.readLine() != null) {
+                            // keeps the pipe from filling
+                        }
+                    } catch (IOException e) {
+                        // the process ended
+                    }
+                }, "space-server-process-output");
+                drain.setDaemon(true);
+                drain.start();
+                return new SpaceServerProcess(process, URI.create(listening.group(1)));
+            }
+        }
+        process.destroyForcibly();
+        throw new IllegalStateException("the space server process did not start; it said:\n" + said);
+    }
+
+    public URI uri() {
+        return uri;
+    }
+
+    @Override
+    public void close() throws InterruptedException {
+        process.destroy();
+        if (!process.waitFor(10, TimeUnit.SECONDS)) {
+            process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+        }
+    }
+}
