@@ -137,6 +137,7 @@ public final class DemoSummary {
      * @param atKill        the robot's pose at the kill
      * @param bumpsAfter    front bumper contacts the control program reported after the kill
      * @param switchesAfter X10 lamp commands at the simulated CM11A after the kill
+     * @param atEnd         the robot's pose when the control program ended
      */
     public record MemberKill(String url, Pose atKill, int bumpsAfter, int switchesAfter, Pose atEnd) {
 
