@@ -25,6 +25,10 @@ import java.util.concurrent.TimeUnit;
  * must command again. A command that cannot carry an answer back (a remote quiet call) is refused while the notice
  * is owed, without settling it. Once the program serving the actuator ends, every command is refused.
  *
+ * <p><b>Holding.</b> While the serving program cannot reach its space, the actuator may be {@linkplain #hold held}
+ * in its safe state: every command is refused with the reason until {@link #release}, because nobody elsewhere
+ * could stop what it would start. A commander refused while it is held has been told.
+ *
  * <p><b>Races.</b> Commands run without a lock on the hardware; a stop that happens while a command is being
  * carried out is noticed by {@link #performed}, which puts the actuator into its safe state once more, so a
  * command that started before a stop can never leave the actuator moving after it.
@@ -38,12 +42,22 @@ public final class ActuatorGuard {
         void stopped(StopRecord record);
     }
 
-    /** The answer to {@link #admit}: carry the command out, or refuse it with the stop the commander is told of. */
-    public record Admission(long epoch, StopRecord refusal) {
+    /**
+     * The answer to {@link #admit}: carry the command out, or refuse it with the stop the commander is told of.
+     *
+     * @param held whether it was refused because the actuator is {@linkplain #hold held}, not for a stop it owes
+     */
+    public record Admission(long epoch, StopRecord refusal, boolean held) {
 
         /** Whether the command may be carried out. */
         public boolean admitted() {
             return refusal == null;
+        }
+
+        /** What the refused commander can do about it, in words. */
+        public String advice() {
+            return held ? "it takes commands again once " + refusal.stoppedBy() + " reaches its space"
+                    : "command it again to move it";
         }
     }
 
@@ -69,6 +83,7 @@ public final class ActuatorGuard {
     private volatile Duration commandTimeout;
     private long epoch;
     private StopRecord ended;
+    private StopRecord held;
     private long lastFailedStopNanos;
     private boolean lastStopFailed;
 
@@ -127,18 +142,21 @@ public final class ActuatorGuard {
     public Admission admit(String commander, boolean canBeTold) {
         synchronized (lock) {
             if (ended != null) {
-                return new Admission(epoch, ended);
+                return new Admission(epoch, ended, false);
             }
             Known known = commanders.computeIfAbsent(commander, c -> new Known());
             known.lastCommandNanos = System.nanoTime();
             StopRecord owed = known.owed;
-            if (owed != null) {
-                if (canBeTold) {
-                    known.owed = null;
-                }
-                return new Admission(epoch, owed);
+            if (owed != null && canBeTold) {
+                known.owed = null; // told now, whether by this stop or by the hold
             }
-            return new Admission(epoch, null);
+            if (held != null) {
+                return new Admission(epoch, held, true);
+            }
+            if (owed != null) {
+                return new Admission(epoch, owed, false);
+            }
+            return new Admission(epoch, null, false);
         }
     }
 
@@ -255,6 +273,35 @@ public final class ActuatorGuard {
         }
         listener.stopped(done);
         return done;
+    }
+
+    /**
+     * Holds the actuator in its safe state: every command is refused with {@code why} until {@link #release}; a
+     * command under way is undone when it completes ({@link #performed}). Call it after {@link #stop} for an
+     * engaged actuator. A second hold keeps the first reason.
+     */
+    public void hold(StopRecord why) {
+        Objects.requireNonNull(why, "why");
+        synchronized (lock) {
+            if (held == null) {
+                held = why;
+                epoch++;
+            }
+        }
+    }
+
+    /** Ends a {@link #hold}: commands are admitted again (a stop still owed is told first). */
+    public void release() {
+        synchronized (lock) {
+            held = null;
+        }
+    }
+
+    /** Whether the actuator is {@linkplain #hold held}. */
+    public boolean isHeld() {
+        synchronized (lock) {
+            return held != null;
+        }
     }
 
     /** Whether the program serving the actuator has ended (every command is refused). */

@@ -25,6 +25,8 @@ import java.util.Properties;
  *   <tr><td>X10 safe state</td><td>{@code rwe.x10.safe.state}</td><td>unchanged</td></tr>
  *   <tr><td>heartbeat period (ms, 0 = none; only for the whole program)</td><td>{@code rwe.heartbeat.ms}</td>
  *       <td>100</td></tr>
+ *   <tr><td>what losing the space stops: {@code all}, or {@code remote} (only what programs elsewhere commanded
+ *       through the space)</td><td>{@code rwe.space.loss.stops}</td><td>all</td></tr>
  * </table>
  * Immutable.
  */
@@ -43,6 +45,7 @@ public final class SafetySettings {
     static final String WATCHDOG = "rwe.watchdog.ms";
     static final String X10_SAFE_STATE = "rwe.x10.safe.state";
     static final String HEARTBEAT = "rwe.heartbeat.ms";
+    static final String SPACE_LOSS_STOPS = "rwe.space.loss.stops";
 
     private final Properties properties;
     private final Map<String, String> environment;
@@ -113,6 +116,28 @@ public final class SafetySettings {
         }
         String everyModule = lookup(X10_SAFE_STATE);
         return everyModule == null ? X10SafeState.UNCHANGED : X10SafeState.parse(everyModule);
+    }
+
+    /**
+     * Whether losing the space stops (and holds) a module's actuator even when only its own serving program commands
+     * it ({@code all}, the default: without its space nobody elsewhere could stop it), or only when a program
+     * elsewhere commanded it through the space ({@code remote}).
+     */
+    public boolean spaceLossStopsAll(String participant, String module) {
+        String key = SPACE_LOSS_STOPS + "." + participant + "." + module;
+        String value = lookup(key);
+        if (value == null) {
+            key = SPACE_LOSS_STOPS;
+            value = lookup(key);
+        }
+        if (value == null) {
+            return true;
+        }
+        return switch (value.toLowerCase(Locale.ROOT)) {
+            case "all" -> true;
+            case "remote" -> false;
+            default -> throw new IllegalArgumentException(key + " is 'all' or 'remote', was '" + value + "'");
+        };
     }
 
     /** How often the program sends a heartbeat; zero for none. */

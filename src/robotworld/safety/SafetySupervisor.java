@@ -46,9 +46,10 @@ import robotworld.space.Timeout;
  *       requests, publishes stop records and answers (two threads, so a slow heartbeat does not hold up a
  *       poll);</li>
  *   <li>{@code safety-watch}: every {@value #CHECK_MILLIS} ms, stops actuators whose remote commander is silent or
- *       ended (rule 3) and, when the space has not been reached for an actuator's command timeout, every actuator
- *       that a remote commander keeps engaged (rule 4); it also carries out stop requests. It never waits for the network, only for the
- *       hardware.</li>
+ *       ended (rule 3) and, when the space has not been reached for an actuator's command timeout, stops every
+ *       engaged actuator and holds it in its safe state until the space answers (rule 4; with
+ *       {@code rwe.space.loss.stops=remote} only those a remote commander keeps engaged, without holding); it also
+ *       carries out stop requests. It never waits for the network, only for the hardware.</li>
  * </ul>
  * Without a space (a program on its own hardware) only the clean-exit rule applies: {@link #stopAll}.
  *
@@ -82,6 +83,8 @@ public final class SafetySupervisor implements AutoCloseable {
     private final List<ActuatorGuard> guards = new CopyOnWriteArrayList<>();
     private final Set<Heartbeat.ModuleName> served = Collections.synchronizedSet(new LinkedHashSet<>());
     private final Map<String, ModuleSafety> described = new ConcurrentHashMap<>();
+    /** The guards that losing the space stops and holds whoever commands them (rwe.space.loss.stops=all). */
+    private final Set<ActuatorGuard> stoppedOnSpaceLossAlways = ConcurrentHashMap.newKeySet();
     private final Map<String, Liveliness> commanders = new ConcurrentHashMap<>();
     private final Set<String> handledRequests = Collections.synchronizedSet(new LinkedHashSet<>());
     private final AtomicLong sequence = new AtomicLong();
@@ -91,6 +94,8 @@ public final class SafetySupervisor implements AutoCloseable {
     /** When the last heartbeat was begun; later than {@link #lastContactNanos} while one is under way or failed. */
     private volatile long attemptNanos;
     private volatile boolean spaceLost;
+    /** Orders rule 4's stops and holds against the release when the space answers again. */
+    private final Object spaceLossLock = new Object();
     private volatile ContainerRef liveness;
     private volatile Subscription stopRequests;
     private volatile boolean watching;
@@ -208,6 +213,9 @@ public final class SafetySupervisor implements AutoCloseable {
         }
         ActuatorGuard guard = new ActuatorGuard(participant, module, actuator, ownId,
                 commandTimeout(participant, module), this::stopped);
+        if (settings.spaceLossStopsAll(participant, module)) {
+            stoppedOnSpaceLossAlways.add(guard);
+        }
         guards.add(guard);
         serves(participant, module);
         return guard;
@@ -216,6 +224,7 @@ public final class SafetySupervisor implements AutoCloseable {
     /** Stops guarding an actuator (its proxy was closed); it is not stopped. */
     public void release(ActuatorGuard guard) {
         guards.remove(guard);
+        stoppedOnSpaceLossAlways.remove(guard);
         served.remove(new Heartbeat.ModuleName(guard.participant(), guard.module()));
     }
 
@@ -433,7 +442,13 @@ public final class SafetySupervisor implements AutoCloseable {
             lastContactNanos = now;
         }
         if (spaceLost) {
-            spaceLost = false;
+            synchronized (spaceLossLock) {
+                if (!spaceLost) {
+                    return;
+                }
+                spaceLost = false;
+                guards.forEach(ActuatorGuard::release);
+            }
             LOG.info("{} reaches its space {} again; stopped actuators stay stopped until commanded again", ownId,
                     space.spaceUri());
         }
@@ -562,21 +577,17 @@ public final class SafetySupervisor implements AutoCloseable {
             // thread that simply did not get the CPU is no evidence of a lost space
             boolean overdue = attemptNanos - contact > 0;
             for (ActuatorGuard guard : guards) {
-                if (!guard.isEngaged() || guard.hasEnded() || !guard.mayRetryStop()) {
+                if (guard.hasEnded()) {
                     continue;
                 }
                 long timeout = guard.commandTimeout().toNanos();
-                // rule 4 is about commands that came through the space and went stale with it: an actuator only
-                // this program commands is not commanded through the space (its own end is rules 1 and 2)
                 if (!heartbeatPeriod.isZero() && overdue && sinceContact > timeout
-                        && !guard.remoteEngagers().isEmpty()) {
-                    spaceLost(sinceContact);
-                    guard.stop(StopCause.SPACE_LOST, "no contact with the space " + space.spaceUri() + " for "
-                            + millis(sinceContact) + " ms (command timeout " + guard.commandTimeout().toMillis()
-                            + " ms)", null, null);
+                        && spaceLost(guard, contact, sinceContact)) {
                     continue;
                 }
-                checkCommanders(guard, timeout);
+                if (guard.isEngaged() && guard.mayRetryStop()) {
+                    checkCommanders(guard, timeout);
+                }
             }
         } catch (RuntimeException e) { // the thread must survive anything the hardware throws
             LOG.error("safety check failed: {}", e.toString(), e);
@@ -602,11 +613,51 @@ public final class SafetySupervisor implements AutoCloseable {
         }
     }
 
-    private void spaceLost(long sinceContact) {
+    /**
+     * Rule 4 for one actuator, whose command timeout the time since the last contact exceeds: stops it when it is
+     * engaged and either it is stopped on every space loss or a remote commander keeps it engaged (their commands
+     * went stale with the space); then holds it, when it is stopped on every space loss, until the space answers,
+     * because nobody elsewhere could stop what its own program would start meanwhile.
+     *
+     * @param contact when the space last answered, as the check began: an answer since then cancels the rule
+     * @return whether the rule applied (rule 3 need not be checked: no heartbeat can be read)
+     */
+    private boolean spaceLost(ActuatorGuard guard, long contact, long sinceContact) {
+        synchronized (spaceLossLock) {
+            // an answer that came in meanwhile has released the holds: holding again now would hold for nothing
+            return lastContactNanos == contact && spaceLostForSure(guard, sinceContact);
+        }
+    }
+
+    private boolean spaceLostForSure(ActuatorGuard guard, long sinceContact) {
+        boolean always = stoppedOnSpaceLossAlways.contains(guard);
+        String reason = "no contact with the space " + space.spaceUri() + " for " + millis(sinceContact)
+                + " ms (command timeout " + guard.commandTimeout().toMillis() + " ms)";
+        if (guard.isEngaged() && (always || !guard.remoteEngagers().isEmpty())) {
+            if (!guard.mayRetryStop()) {
+                return true;
+            }
+            spaceLost(sinceContact, always);
+            StopRecord stop = guard.stop(StopCause.SPACE_LOST, reason, null, null);
+            if (always) {
+                guard.hold(stop);
+            }
+            return true;
+        }
+        if (always && !guard.isHeld()) {
+            spaceLost(sinceContact, true);
+            guard.hold(new StopRecord(Instant.now(), guard.participant(), guard.module(), StopCause.SPACE_LOST,
+                    reason, "held in its safe state", ownId, null, null));
+        }
+        return always;
+    }
+
+    private void spaceLost(long sinceContact, boolean holding) {
         if (!spaceLost) {
             spaceLost = true;
-            LOG.warn("{} cannot reach its space {}: no contact for {} ms; the actuators commanded through it are"
-                    + " stopped", ownId, space.spaceUri(), millis(sinceContact));
+            LOG.warn("{} cannot reach its space {}: no contact for {} ms; {}", ownId, space.spaceUri(),
+                    millis(sinceContact), holding ? "its actuators are stopped and take no command until it does"
+                            : "the actuators commanded through it are stopped");
         }
     }
 

@@ -22,11 +22,11 @@
  *       commanded it there are alive: the serving program stops it when one of them has been silent (no call, no
  *       changed heartbeat) for the actuator's <i>command timeout</i> (default 500 ms), or said in its last
  *       heartbeat that it ended.</li>
- *   <li><b>Losing the space.</b> A serving program that has not reached its space for an engaged actuator's
- *       command timeout stops it if a remote commander (a program other than the serving one, commanding through
- *       the space) keeps it engaged, and says so once in its log. An actuator engaged only by the serving program's
- *       own commands keeps running: they never went through the space, and that program's end is rules 1 and
- *       2.</li>
+ *   <li><b>Losing the space.</b> A serving program that has not reached its space for an actuator's command
+ *       timeout stops it if it is engaged and holds it in its safe state, refusing every command with the reason,
+ *       until the space answers again (nobody elsewhere could stop the robot meanwhile), and says so once in its
+ *       log. With {@code rwe.space.loss.stops=remote} it stops only the actuators a remote commander keeps
+ *       engaged, and holds nothing.</li>
  *   <li><b>Stop everything.</b> A {@link robotworld.safety.StopRequest} (from {@code rwe stop WORLD} or a STOP
  *       button, {@link robotworld.safety.WorldStop}) makes every serving program stop its actuators of the named
  *       participants at once, and answer with one {@link robotworld.safety.StopAnswer} per module.</li>

@@ -132,7 +132,7 @@ public abstract class XVSMLocalModule<H> extends XVSMModule {
         ActuatorGuard.Admission admission = guard == null ? null : guard.admit(commander, true);
         if (admission != null && !admission.admitted()) {
             ActuatorStoppedException refused = new ActuatorStoppedException(participant(), moduleName(),
-                    request.functionText(), hostName(), admission.refusal().summary());
+                    request.functionText(), hostName(), admission.refusal().summary(), admission.advice());
             publish(ErrorAnswer.of(request, refused, hostName()).toAnswer(hostName()));
             throw refused;
         }

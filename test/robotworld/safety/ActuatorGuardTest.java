@@ -136,4 +136,44 @@ class ActuatorGuardTest {
         guard.setCommandTimeout(Duration.ofMillis(50));
         assertEquals(50, guard.commandTimeout().toMillis());
     }
+
+    @Test
+    void aHeldActuatorRefusesEveryCommandTellingWhyUntilReleased() {
+        command("robot-pc#own", true, 450);
+        StopRecord stop = guard.stop(StopCause.SPACE_LOST, "no contact with the space", null, null);
+        guard.hold(stop);
+        for (int i = 0; i < 3; i++) {
+            ActuatorGuard.Admission refused = guard.admit("robot-pc#own", true);
+            assertFalse(refused.admitted(), "held: refused every time, not only once");
+            assertTrue(refused.held());
+            assertTrue(refused.advice().contains("reaches its space"), refused.advice());
+        }
+        assertFalse(guard.admit("newcomer#c", true).admitted(), "held for every commander, known or not");
+        guard.release();
+        assertTrue(guard.admit("robot-pc#own", true).admitted(), "told while held: obeyed once released");
+    }
+
+    @Test
+    void aCommandUnderWayWhenTheActuatorIsHeldIsUndone() {
+        ActuatorGuard.Admission admitted = guard.admit("robot-pc#own", true);
+        assertTrue(admitted.admitted());
+        guard.hold(new StopRecord(java.time.Instant.now(), "Bot", "Motor", StopCause.SPACE_LOST, "no space",
+                "held in its safe state", "robot-pc#own", null, null));
+        motor.speed = 450; // the command reaches the hardware after the hold
+        guard.performed("robot-pc#own", admitted);
+        assertEquals(0, motor.speed, "back in its safe state");
+    }
+
+    @Test
+    void aStopStillOwedIsToldAfterTheHoldWhenTheCommanderDidNotCallMeanwhile() {
+        command("laptop#a", true, 300);
+        StopRecord stop = guard.stop(StopCause.SPACE_LOST, "no space", null, null);
+        guard.hold(stop);
+        guard.release();
+        ActuatorGuard.Admission told = guard.admit("laptop#a", true);
+        assertFalse(told.admitted());
+        assertFalse(told.held());
+        assertEquals("command it again to move it", told.advice());
+        assertTrue(guard.admit("laptop#a", true).admitted());
+    }
 }

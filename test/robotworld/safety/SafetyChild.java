@@ -24,6 +24,10 @@ import robotworld.xvsm.XVSMX10LampModuleLocal;
  *                                                     calls System.exit(3) or waits to be killed
  * serve  winch  SPACE_URL BUS_PORT                    as wait, and serves SafetyBot/Winch too (address 4), which it
  *                                                     does not command itself
+ * serve  drive  SPACE_URL BUS_PORT                    as winch, and keeps setting motors 1 and 2 to 0.45 every 50 ms,
+ *                                                     as a control loop does: prints REFUSED and the message at the
+ *                                                     first refused command of a run, DRIVING when one is carried
+ *                                                     out again
  * room SPACE_URL X10_PORT                             the room's program: serves SafetyRoom/Lamp, switches it on,
  *                                                     prints READY, waits
  * command SPACE_URL SPEED [GO_FILE]                   a remote commander: sets motors 1 and 2 of SafetyBot/Motor
@@ -56,7 +60,7 @@ public final class SafetyChild {
                         SafetyRig.MOTOR, new MotorModuleProxy(bus, 1, SafetyRig.MOTOR)));
                 runtime.own(new XVSMBumperModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.BUMPER,
                         new BumperModuleProxy(bus, 2, SafetyRig.BUMPER)));
-                if (mode.equals("winch")) {
+                if (mode.equals("winch") || mode.equals("drive")) {
                     runtime.own(new XVSMMotorModuleLocal(runtime, SafetyRig.ROBOT, SafetyRig.WINCH,
                             new MotorModuleProxy(bus, 4, SafetyRig.WINCH)));
                 }
@@ -71,12 +75,36 @@ public final class SafetyChild {
                     case "throw" -> throw new IllegalStateException("the control program failed on purpose");
                     case "exit" -> System.exit(3);
                     case "wait", "winch" -> runtime.serveUntilStopped();
+                    case "drive" -> drive(motor);
                     default -> throw new IllegalArgumentException("unknown mode " + mode);
                 }
             } catch (Throwable failure) {
                 runtime.failed(failure);
                 throw failure;
             }
+        }
+    }
+
+    /** A control loop that keeps driving and says when its commands are refused and when they are carried again. */
+    private static void drive(XVSMMotorModuleLocal motor) throws InterruptedException {
+        boolean refused = false;
+        while (true) {
+            try {
+                motor.setMotor(1, 0.45);
+                motor.setMotor(2, 0.45);
+                if (refused) {
+                    refused = false;
+                    System.out.println("DRIVING");
+                    System.out.flush();
+                }
+            } catch (robotworld.xvsm.ActuatorStoppedException told) {
+                if (!refused) {
+                    refused = true;
+                    System.out.println("REFUSED " + told.getMessage());
+                    System.out.flush();
+                }
+            }
+            Thread.sleep(50);
         }
     }
 

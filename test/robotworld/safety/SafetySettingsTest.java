@@ -1,6 +1,7 @@
 package robotworld.safety;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -67,5 +68,19 @@ class SafetySettingsTest {
                 Map.of()).x10SafeState("R", "L", ModuleSafety.NONE));
         assertThrows(IllegalArgumentException.class, () -> new ModuleSafety(null, 70_000, null));
         assertEquals(Duration.ZERO, SafetySettings.of(properties("rwe.heartbeat.ms", "0"), Map.of()).heartbeatPeriod());
+    }
+
+    @Test
+    void losingTheSpaceStopsEveryActuatorUnlessSetToRemotePerModuleOrForAll() {
+        assertTrue(SafetySettings.of(new Properties(), Map.of()).spaceLossStopsAll("Bot", "Motor"), "the default");
+        SafetySettings remote = SafetySettings.of(properties("rwe.space.loss.stops", "remote",
+                "rwe.space.loss.stops.Bot.Winch", "all"), Map.of());
+        assertFalse(remote.spaceLossStopsAll("Bot", "Motor"));
+        assertTrue(remote.spaceLossStopsAll("Bot", "Winch"), "the module's own setting wins");
+        assertFalse(SafetySettings.of(new Properties(), Map.of("RWE_SPACE_LOSS_STOPS", "REMOTE"))
+                .spaceLossStopsAll("Bot", "Motor"), "from the environment, in any case");
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class, () -> SafetySettings.of(
+                properties("rwe.space.loss.stops", "some"), Map.of()).spaceLossStopsAll("Bot", "Motor"));
+        assertTrue(bad.getMessage().contains("rwe.space.loss.stops is 'all' or 'remote'"), bad.getMessage());
     }
 }

@@ -20,13 +20,14 @@ import robotworld.xvsm.XVSMRuntime;
 
 /**
  * Rule 4: a program that serves actuators and cannot reach its space for longer than the command timeout stops
- * those that a program elsewhere commanded through the space (their commands went stale with it), and says so once
- * in its log; whether the space server is gone (connections refused), killed with SIGKILL, or frozen (it accepts
- * and never answers). What only the serving program itself commands keeps running: it was never commanded through
- * the space, and that program's own end is what stops it (rules 1 and 2).
+ * them and says so once in its log; whether the space server is gone (connections refused), killed with SIGKILL, or
+ * frozen (it accepts and never answers). By default it stops every engaged actuator and holds them all in their safe
+ * state until the space answers again (nobody elsewhere could stop what its own program would start meanwhile): its
+ * own commands are refused and it is told. With {@code rwe.space.loss.stops=remote} only what a program elsewhere
+ * commanded through the space is stopped.
  *
- * <p>The serving program runs in a JVM of its own ({@code SafetyChild serve winch}): it drives the wheels (Motor)
- * itself at 0.45 and serves the Winch, which this test commands through the space as a remote commander.
+ * <p>The serving program runs in a JVM of its own ({@code SafetyChild serve winch|drive}): it drives the wheels
+ * (Motor) itself at 0.45 and serves the Winch, which this test commands through the space as a remote commander.
  */
 class SpaceLossTest {
 
@@ -54,7 +55,7 @@ class SpaceLossTest {
     }
 
     @Test
-    void aProviderWhoseSpaceServerIsGoneStopsWhatWasCommandedThroughItAndSaysSoOnce() throws Exception {
+    void aProviderWhoseSpaceServerIsGoneStopsEveryActuatorAndSaysSoOnce() throws Exception {
         try (ChildProgram provider = ChildProgram.start(temp, PROVIDER, SafetyChild.class, "serve", "winch",
                 rig.spaceUrl, rig.busPort);
              XVSMRuntime laptop = XVSMRuntime.connect(rig.spaceUrl, "laptop")) {
@@ -65,21 +66,21 @@ class SpaceLossTest {
             assertEquals(450, rig.motorSpeed(1));
             rig.space.close();
             eventually("the winch, commanded through the space, stops", () -> rig.winchSpeed(1) == 0);
+            eventually("the wheels its own program drives stop too", () -> rig.motorSpeed(1) == 0
+                    && rig.motorSpeed(2) == 0);
             Thread.sleep(2_000); // the outage goes on: nothing more to say, nothing more to stop
             String output = provider.output();
             assertEquals(1, count(output, "cannot reach its space"), output);
-            assertTrue(output.contains("Winch stopped") && output.contains("(space-lost: no contact with the space"),
-                    output);
+            assertTrue(output.contains("Winch stopped") && output.contains("Motor stopped")
+                    && output.contains("(space-lost: no contact with the space"), output);
             assertTrue(provider.isAlive(), "it keeps serving, waiting for its space");
             assertEquals(0, rig.winchSpeed(1));
-            assertEquals(450, rig.motorSpeed(1), "the wheels its own program drives were never commanded through the"
-                    + " space: they keep running\n" + output);
-            assertEquals(450, rig.motorSpeed(2));
+            assertEquals(0, rig.motorSpeed(1));
         }
     }
 
     @Test
-    void aProviderWhoseSpaceServerProcessIsKilledStopsWhatARemoteCommanderDrove() throws Exception {
+    void aProviderWhoseSpaceServerProcessIsKilledStopsItsActuators() throws Exception {
         TestPeers.requireCommand("kill", "procps");
         try (ChildProgram space = spaceServer();
              ChildProgram provider = ChildProgram.start(temp, PROVIDER, SafetyChild.class, "serve", "winch",
@@ -91,17 +92,16 @@ class SpaceLossTest {
             signal("KILL", space.pid()); // no goodbye: its connections just break
             space.awaitExit(START);
             eventually("the winch stops", () -> rig.winchSpeed(1) == 0);
+            eventually("the wheels stop", () -> rig.motorSpeed(1) == 0 && rig.motorSpeed(2) == 0);
             eventually("its log says why", () -> provider.output().contains("(space-lost: no contact with the space"));
-            String output = provider.output();
-            assertEquals(450, rig.motorSpeed(1), "what its own program drives keeps running\n" + output);
         }
     }
 
     @Test
-    void aProviderWhoseSpaceServerFreezesStopsWhatWasCommandedThroughItAndResumesQuietly() throws Exception {
+    void whileItsSpaceIsFrozenAProviderHoldsItsActuatorsAndRefusesItsOwnCommandsThenResumes() throws Exception {
         TestPeers.requireCommand("kill", "procps");
         try (ChildProgram space = spaceServer();
-             ChildProgram provider = ChildProgram.start(temp, PROVIDER, SafetyChild.class, "serve", "winch",
+             ChildProgram provider = ChildProgram.start(temp, PROVIDER, SafetyChild.class, "serve", "drive",
                      url(space), rig.busPort);
              XVSMRuntime laptop = XVSMRuntime.connect(url(space), "laptop")) {
             provider.awaitLine("READY", START);
@@ -110,16 +110,45 @@ class SpaceLossTest {
             assertEquals(300, rig.winchSpeed(1));
             signal("STOP", space.pid()); // accepts connections, never answers
             eventually("the winch stops", () -> rig.winchSpeed(1) == 0);
+            eventually("the wheels stop", () -> rig.motorSpeed(1) == 0 && rig.motorSpeed(2) == 0);
+            eventually("its own program is told", () -> provider.output().contains("REFUSED"));
+            for (int i = 0; i < 20; i++) { // its control loop commands 0.45 every 50 ms: held, nothing moves
+                assertEquals(0, rig.motorSpeed(1), "held while the space is frozen\n" + provider.output());
+                Thread.sleep(50);
+            }
+            String refused = provider.output().lines().filter(l -> l.startsWith("REFUSED")).findFirst().orElseThrow();
+            assertTrue(refused.contains("space-lost") && refused.contains("takes commands again once"), refused);
             signal("CONT", space.pid());
             eventually("it says it reaches the space again", () -> provider.output().contains("reaches its space"));
+            eventually("its own commands are carried out again", () -> provider.output().contains("DRIVING")
+                    && rig.motorSpeed(1) == 450);
             String output = provider.output();
             assertEquals(1, count(output, "cannot reach its space"), output);
             assertEquals(0, rig.winchSpeed(1), "stopped actuators stay stopped until commanded again");
-            assertEquals(450, rig.motorSpeed(1), "what its own program drives kept running\n" + output);
             assertThrows(ActuatorStoppedException.class, () -> winch.setMotor(1, 0.3),
                     "the remote commander is told on its next call");
             winch.setMotor(1, 0.3);
             assertEquals(300, rig.winchSpeed(1), "and obeyed on the call after it");
+        }
+    }
+
+    @Test
+    void withSpaceLossStoppingOnlyRemoteCommandsTheProgramsOwnWheelsKeepRunning() throws Exception {
+        List<String> remoteOnly = new java.util.ArrayList<>(PROVIDER);
+        remoteOnly.add("-Drwe.space.loss.stops=remote");
+        try (ChildProgram provider = ChildProgram.start(temp, remoteOnly, SafetyChild.class, "serve", "winch",
+                rig.spaceUrl, rig.busPort);
+             XVSMRuntime laptop = XVSMRuntime.connect(rig.spaceUrl, "laptop")) {
+            provider.awaitLine("READY", START);
+            winch(laptop).setMotor(1, 0.3);
+            assertEquals(300, rig.winchSpeed(1));
+            rig.space.close();
+            eventually("the winch, commanded through the space, stops", () -> rig.winchSpeed(1) == 0);
+            Thread.sleep(1_000);
+            String output = provider.output();
+            assertTrue(output.contains("the actuators commanded through it are stopped"), output);
+            assertEquals(450, rig.motorSpeed(1), "what only its own program drives keeps running\n" + output);
+            assertEquals(450, rig.motorSpeed(2));
         }
     }
 
