@@ -218,8 +218,12 @@ final class ClusterNode {
         return retrying(() -> map.get(name), deadline, uri, "lookup of '" + name + "'");
     }
 
+    /** How often a call was looked for in every container ({@link #findReceipt}): costly, rare when clients name containers. */
+    final java.util.concurrent.atomic.LongAdder receiptSearches = new java.util.concurrent.atomic.LongAdder();
+
     /** The container of space {@code space} that knows client call {@code callId}, asking all of them; or null. */
     String findReceipt(String space, String callId, long deadline, URI uri) {
+        receiptSearches.increment();
         IMap<String, ContainerRecord> map = containers(space);
         Map<String, Outcome> answers = retrying(() -> map.executeOnEntries(
                 ContainerCall.receipts(ContainerCall.Kind.FIND_RECEIPTS, null, List.of(callId))), deadline, uri,

@@ -19,8 +19,9 @@ import robotworld.space.SpaceException;
  * in its container until the client confirms it from anywhere, and a cancel learns from the container whether a
  * write happened, puts a held removal back, or makes sure a late call is refused.
  *
- * <p>A member knows the containers of the calls that came through it. For a call id it does not know (the client
- * failed over from another member), it asks every container of the space which one knows the call.
+ * <p>A member knows the containers of the calls that came through it. A client that failed over from another
+ * member names the container of each call it settles ({@link #hint}); for a call id it still does not know, it
+ * asks every container of the space which one knows the call.
  */
 final class ClusterReceipts implements CallReceipts {
 
@@ -48,6 +49,18 @@ final class ClusterReceipts implements CallReceipts {
         if (removal) {
             held.add(call);
         }
+    }
+
+    /**
+     * A failed-over client names the container of a call it settles: no need to ask every container (which,
+     * while partitions move after a member died, held up every serving thread for seconds).
+     */
+    @Override
+    public void hint(String callId, String containerId) {
+        if (containerOf.size() >= MAX_KNOWN) {
+            containerOf.clear();
+        }
+        containerOf.putIfAbsent(callId, containerId);
     }
 
     /** The container holds the removal since the call itself. */
@@ -90,8 +103,11 @@ final class ClusterReceipts implements CallReceipts {
         if (container == null) {
             return false;
         }
-        containerOf.remove(callId);
-        return space.receiptCall(container, ContainerCall.Kind.RESTORE_RECEIPT, callId).happened;
+        boolean restored = space.receiptCall(container, ContainerCall.Kind.RESTORE_RECEIPT, callId).happened;
+        if (restored) {
+            containerOf.remove(callId); // settled; otherwise a cancel goes on to forbid it there
+        }
+        return restored;
     }
 
     /** The container keeps it since the call itself. */
@@ -146,7 +162,11 @@ final class ClusterReceipts implements CallReceipts {
             return known;
         }
         try {
-            return space.findReceipt(callId);
+            String found = space.findReceipt(callId);
+            if (found != null) {
+                containerOf.put(callId, found); // a cancel asks up to three times: look once
+            }
+            return found;
         } catch (SpaceException e) {
             LOG.log(Level.WARNING, "could not look for call " + callId + " in the cluster: " + e.getMessage());
             return null;

@@ -13,6 +13,14 @@ public interface CallReceipts {
     /** Holds a removal until {@code callId} is acknowledged; its entries come back after {@code leaseMillis}. */
     void hold(String callId, Removal removal, long leaseMillis);
 
+    /**
+     * The client says call {@code callId}, which it is about to acknowledge or cancel, ran on container
+     * {@code containerId}. A space that keeps receipts in its containers settles the call there instead of asking
+     * every container; a wrong hint can only spoil that client's own call. Others ignore it.
+     */
+    default void hint(String callId, String containerId) {
+    }
+
     /** The client received the answer of {@code callId}: its removal stands. */
     void acknowledge(String callId);
 

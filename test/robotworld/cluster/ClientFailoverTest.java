@@ -162,6 +162,11 @@ class ClientFailoverTest {
         assertEquals(got.size(), unique.size(), "nothing taken twice");
         assertTrue(unique.containsAll(acknowledged), "no acknowledged write lost: missing "
                 + acknowledged.stream().filter(value -> !unique.contains(value)).toList());
+
+        for (int survivor = 1; survivor < 3; survivor++) {
+            assertEquals(0, cluster.member(survivor).node().receiptSearches.sum(), "the clients named the container of"
+                    + " every call they settled with a survivor: none was looked for in every container");
+        }
     }
 
     private static void awaitAcks(java.util.concurrent.atomic.AtomicLong acks, long atLeast, String when)

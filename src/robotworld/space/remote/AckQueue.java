@@ -12,7 +12,7 @@ import java.util.function.Predicate;
  */
 final class AckQueue {
 
-    /** Keeps the header far below the server's 16 KiB header limit (ids are about 25 characters). */
+    /** Keeps the header far below the server's 16 KiB header limit (a call id with its container is about 45 characters). */
     private static final int MAX_PER_REQUEST = 128;
 
     private final ConcurrentLinkedQueue<String> pending = new ConcurrentLinkedQueue<>();

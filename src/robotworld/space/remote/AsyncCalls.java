@@ -19,6 +19,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 
+import robotworld.space.ContainerRef;
 import robotworld.space.Entry;
 import robotworld.space.SpaceClosedException;
 import robotworld.space.SpaceEngine;
@@ -167,6 +168,14 @@ final class AsyncCalls implements Runnable {
         String operation();
 
         byte[] encode(String callId, Timeout wait);
+
+        /** The container the call runs on (a shift-then-take's shift), named when the call is settled. */
+        ContainerRef container();
+
+        /** The container the call takes from. */
+        default ContainerRef takesFrom() {
+            return container();
+        }
     }
 
     /** One take (or shift-then-take) waiting without a thread. */
@@ -180,6 +189,9 @@ final class AsyncCalls implements Runnable {
         private final long operationDeadline;
         // the fields below belong to the thread sending the request, then to the I/O thread
         private String callId;
+        /** How the call and its take are named when settled ({@link RemoteSpace#settleRef}). */
+        private String ref;
+        private String takeRef;
         private String ackHeader;
         private SocketChannel channel;
         private SelectionKey key;
@@ -294,9 +306,11 @@ final class AsyncCalls implements Runnable {
                     : RemoteSpace.waitLeft(operationDeadline - now);
             forgetCallIds();
             callId = owner.newCallId();
-            owner.waiting(callId, true);
+            ref = RemoteSpace.settleRef(callId, request.container());
+            takeRef = composite ? RemoteSpace.settleRef(RemoteSpace.takeId(callId), request.takesFrom()) : ref;
+            owner.waiting(ref, true);
             if (composite) {
-                owner.waiting(RemoteSpace.takeId(callId), true);
+                owner.waiting(takeRef, true);
             }
             byte[] body = request.encode(callId, wait);
             ackHeader = owner.acks().drain();
@@ -402,7 +416,7 @@ final class AsyncCalls implements Runnable {
                 }
             } else {
                 if (answer.ack && running()) {
-                    owner.acks().add(composite ? RemoteSpace.takeId(callId) : callId);
+                    owner.acks().add(takeRef);
                 }
                 finish(answer.entries, null);
             }
@@ -478,7 +492,7 @@ final class AsyncCalls implements Runnable {
         }
 
         private void cancelOnServer() {
-            String id = composite ? RemoteSpace.takeId(callId) : callId;
+            String id = takeRef;
             try {
                 owner.timer().execute(() -> owner.cancelQuietly(id));
             } catch (RejectedExecutionException closedMeanwhile) {
@@ -488,8 +502,8 @@ final class AsyncCalls implements Runnable {
 
         private void forgetCallIds() {
             if (callId != null) {
-                owner.waiting(callId, false);
-                owner.waiting(RemoteSpace.takeId(callId), false);
+                owner.waiting(ref, false);
+                owner.waiting(takeRef, false);
             }
         }
 
@@ -538,7 +552,7 @@ final class AsyncCalls implements Runnable {
                         channel = null;
                     }
                     if (callId != null) {
-                        ids[0] = composite ? RemoteSpace.takeId(callId) : callId;
+                        ids[0] = takeRef;
                         forgetCallIds();
                     }
                     stopped.countDown();

@@ -101,6 +101,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     private final String clientId = Long.toHexString(new java.security.SecureRandom().nextLong());
     private final AtomicLong lastCall = new AtomicLong();
     /** Waiting calls in progress, by call id, so that close() can cancel them on the server. */
+    /** Calls that wait on the server, as settle references ({@link #settleRef}), for close() to cancel. */
     private final Map<String, Boolean> waitingCalls = new ConcurrentHashMap<>();
     /** Pools of servers this client failed over from: closed with the client (their calls may still use them). */
     private final List<ConnectionPool> retired = new java.util.concurrent.CopyOnWriteArrayList<>();
@@ -281,7 +282,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         for (Selector selector : selectors) {
             Objects.requireNonNull(selector, "selector");
         }
-        return call(operation, timeout, retry, (out, id, wait) -> {
+        return call(operation, timeout, retry, container, null, (out, id, wait) -> {
             out.cref("container", container).field("timeout", wait.millis()).selectors(selectors);
             if (id != null) {
                 out.field("call", id);
@@ -294,7 +295,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         Objects.requireNonNull(container, "container");
         Objects.requireNonNull(timeout, "timeout");
         items.forEach(item -> Objects.requireNonNull(item, "item"));
-        call("write", timeout, Retry.WRITE, (out, id, wait) -> {
+        call("write", timeout, Retry.WRITE, container, null, (out, id, wait) -> {
             out.cref("container", container).field("timeout", wait.millis()).items(items);
             if (id != null) {
                 out.field("call", id);
@@ -307,7 +308,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         Objects.requireNonNull(container, "container");
         Objects.requireNonNull(timeout, "timeout");
         items.forEach(item -> Objects.requireNonNull(item, "item"));
-        return call("shift", Timeout.TRY_ONCE, Retry.WRITE, (out, id, wait) -> out.cref("container", container)
+        return call("shift", Timeout.TRY_ONCE, Retry.WRITE, container, null, (out, id, wait) -> out.cref("container", container)
                 .field("timeout", timeout.millis()).items(items).field("call", id)).displaced;
     }
 
@@ -339,7 +340,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             Objects.requireNonNull(selector, "selector");
         }
         long start = System.nanoTime();
-        Answer answer = call(operation, timeout, Retry.WRITE_THEN_TAKE, (out, id, wait) -> {
+        Answer answer = call(operation, timeout, Retry.WRITE_THEN_TAKE, writeTo, takeFrom, (out, id, wait) -> {
             out.cref("container", writeTo).field("timeout", wait.millis()).items(items).field("call", id);
             out.field("take").startObject().cref("container", takeFrom).selectors(selectors)
                     .field("call", takeId(id)).endObject();
@@ -393,6 +394,16 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             }
 
             @Override
+            public ContainerRef container() {
+                return shiftTo;
+            }
+
+            @Override
+            public ContainerRef takesFrom() {
+                return takeFrom;
+            }
+
+            @Override
             public byte[] encode(String callId, Timeout wait) {
                 return RemoteSpace.this.encode((out, id, w) -> {
                     out.cref("container", shiftTo).field("timeout", w.millis()).items(items).field("call", id);
@@ -410,6 +421,11 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             @Override
             public String operation() {
                 return "take";
+            }
+
+            @Override
+            public ContainerRef container() {
+                return container;
             }
 
             @Override
@@ -487,6 +503,26 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     /** The call id of the take of a writeThenTake whose write has id {@code callId}. */
     static String takeId(String callId) {
         return callId + ".t";
+    }
+
+    /**
+     * How a call is named when it is acknowledged or cancelled: {@code id/containerId}, so that a server that never
+     * saw the call (this client failed over to it) settles it on its container at once instead of asking every
+     * container of a clustered space; the plain id where there is no container or its id is not wire-safe.
+     */
+    static String settleRef(String callId, ContainerRef container) {
+        if (container == null || callId.length() + 1 + container.id().length() > 128) {
+            return callId;
+        }
+        String id = container.id();
+        for (int i = 0; i < id.length(); i++) {
+            char c = id.charAt(i);
+            if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_'
+                    || c == '.' || c == ':')) {
+                return callId;
+            }
+        }
+        return callId + "/" + id;
     }
 
     // ---- notifications ----
@@ -606,6 +642,16 @@ public final class RemoteSpace implements Capi, AsyncTakes {
      * @param timeout the operation's timeout, or null for calls that do not wait
      */
     Answer call(String operation, Timeout timeout, Retry retry, Body body) {
+        return call(operation, timeout, retry, null, null, body);
+    }
+
+    /**
+     * As {@link #call(String, Timeout, Retry, Body)} for a call on a container.
+     *
+     * @param on     the container the call runs on, named when it is settled (null: none)
+     * @param takeOn the container of a writeThenTake's take (null for other calls)
+     */
+    Answer call(String operation, Timeout timeout, Retry retry, ContainerRef on, ContainerRef takeOn, Body body) {
         ensureOpen();
         long start = System.nanoTime();
         boolean waits = timeout != null && !timeout.isTryOnce();
@@ -623,6 +669,8 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             Timeout wait = timeout == null ? Timeout.TRY_ONCE : infinite ? Timeout.INFINITE
                     : waitLeft(operationDeadline - now);
             String callId = needsId ? clientId + ":" + lastCall.incrementAndGet() : null;
+            String ref = callId == null ? null : settleRef(callId, on);
+            String takeRef = callId == null ? null : settleRef(takeId(callId), takeOn);
             byte[] request = encode(body, callId, wait);
             long serverWait = wait.isInfinite() ? serverMaxWaitMillis : Math.min(wait.millis(), serverMaxWaitMillis);
             long readDeadline = now + TimeUnit.MILLISECONDS.toNanos(serverWait) + allowance;
@@ -632,9 +680,9 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             boolean sent = false;
             String ackHeader = acks.drain();
             if (waits) {
-                waitingCalls.put(callId, Boolean.TRUE);
+                waitingCalls.put(ref, Boolean.TRUE);
                 if (composite) {
-                    waitingCalls.put(takeId(callId), Boolean.TRUE);
+                    waitingCalls.put(takeRef, Boolean.TRUE);
                 }
             }
             try {
@@ -674,7 +722,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                     continue; // the server's wait ran out before ours: ask again
                 } else {
                     if (answer.ack) {
-                        acks.add(composite ? takeId(callId) : callId);
+                        acks.add(composite ? takeRef : ref);
                     }
                     return answer;
                 }
@@ -683,7 +731,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 // or silent server, and is handled below like any other broken exchange
                 pool.discard(connection);
                 acks.requeue(ackHeader);
-                return interrupted(operation, callId, retry);
+                return interrupted(operation, ref, takeRef, retry);
             } catch (IOException e) {
                 if (connection != null) {
                     pool.discard(connection);
@@ -691,7 +739,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 acks.requeue(ackHeader);
                 if (closed) {
                     if (waits) {
-                        exchangeQuietly("cancel", null, callId, System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(200));
+                        exchangeQuietly("cancel", null, ref, System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(200));
                     }
                     throw new SpaceClosedException("the remote space " + endpoint.url() + " was closed during "
                             + operation);
@@ -705,7 +753,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                     failover(used, e); // with several servers, settle and repeat the call with the next one
                 }
                 if (sent && (retry == Retry.REMOVAL || retry == Retry.WRITE || composite || !stale)) {
-                    Answer settled = settleLostCall(operation, callId, retry, networkDeadline, e);
+                    Answer settled = settleLostCall(operation, ref, takeRef, retry, networkDeadline, e);
                     if (settled != null) {
                         return settled;
                     }
@@ -716,9 +764,9 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 lastFailure = e;
             } finally {
                 if (waits) {
-                    waitingCalls.remove(callId);
+                    waitingCalls.remove(ref);
                     if (composite) {
-                        waitingCalls.remove(takeId(callId));
+                        waitingCalls.remove(takeRef);
                     }
                 }
             }
@@ -730,8 +778,14 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         }
     }
 
-    /** After the connection broke with the request sent: makes a repeat safe, or gives up. */
-    private Answer settleLostCall(String operation, String callId, Retry retry, long deadline, IOException cause) {
+    /**
+     * After the connection broke with the request sent: makes a repeat safe, or gives up.
+     *
+     * @param callId  the call's settle reference
+     * @param takeRef the settle reference of a writeThenTake's take
+     */
+    private Answer settleLostCall(String operation, String callId, String takeRef, Retry retry, long deadline,
+                                  IOException cause) {
         switch (retry) {
             case IDEMPOTENT:
                 return null;
@@ -742,9 +796,9 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 cancelUntil(callId, deadline);
                 return null;
             case WRITE_THEN_TAKE:
-                cancelUntil(takeId(callId), deadline); // the take never counts: its entries go back
+                cancelUntil(takeRef, deadline); // the take never counts: its entries go back
                 // then as a write: "completed" tells the caller to take on its own
-                return settleLostCall(operation, callId, Retry.WRITE, deadline, cause);
+                return settleLostCall(operation, callId, takeRef, Retry.WRITE, deadline, cause);
             case WRITE:
                 Answer outcome = cancelUntil(callId, deadline);
                 if (outcome != null && "completed".equals(outcome.outcome)) {
@@ -761,13 +815,13 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         }
     }
 
-    /** The waiting thread was interrupted: cancel on the server, then report. */
-    private Answer interrupted(String operation, String callId, Retry retry) {
+    /** The waiting thread was interrupted: cancel on the server (by settle references), then report. */
+    private Answer interrupted(String operation, String callId, String takeRef, Retry retry) {
         Thread.interrupted(); // talk to the server undisturbed; the flag is set again below
         try {
             if (retry == Retry.WRITE_THEN_TAKE) {
                 // the take is undone; the write is left as it is (the caller learns that it may have happened)
-                exchangeQuietly("cancel", null, takeId(callId), System.nanoTime()
+                exchangeQuietly("cancel", null, takeRef, System.nanoTime()
                         + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
             }
             Answer outcome = exchangeQuietly("cancel", null, callId, System.nanoTime()

@@ -160,11 +160,15 @@ final class OperationsHandler extends Handler.Wrapper {
             return;
         }
         java.util.List<String> ids = new java.util.ArrayList<>();
-        for (String id : header.split(",")) {
+        for (String token : header.split(",")) {
             if (ids.size() >= MAX_ACKS_PER_REQUEST) {
                 throw new ErrorAnswer(WireError.BAD_REQUEST, "more than " + MAX_ACKS_PER_REQUEST + " acks in one request");
             }
-            ids.add(RequestFields.id(id.trim(), Wire.ACK_HEADER));
+            String[] reference = RequestFields.callReference(token.trim(), Wire.ACK_HEADER);
+            if (reference[1] != null) {
+                state.receipts.hint(reference[0], reference[1]);
+            }
+            ids.add(reference[0]);
         }
         state.receipts.acknowledge(ids);
     }

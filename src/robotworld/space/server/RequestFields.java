@@ -29,11 +29,15 @@ final class RequestFields {
     ContainerSpec spec;
     String name;
     String call;
+    /** The container the client says call {@link #call} ran on ({@code call: "id/container"}, to settle it), or null. */
+    String callContainer;
     String session;
     String subscription;
     Set<Operation> operations;
     NotificationMode mode;
     List<String> calls;
+    /** For each of {@link #calls}, the container its client says it ran on (null where it said none). */
+    List<String> callContainers;
     /** The take of a {@code writeThenTake}: its container, selectors and call id. */
     RequestFields take;
 
@@ -55,14 +59,24 @@ final class RequestFields {
                 case "items" -> fields.items = in.readItems();
                 case "spec" -> fields.spec = in.readSpec();
                 case "name" -> fields.name = in.readString("name");
-                case "call" -> fields.call = id(in.readString("call"), "call");
+                case "call" -> {
+                    String[] reference = callReference(in.readString("call"), "call");
+                    fields.call = reference[0];
+                    fields.callContainer = reference[1];
+                }
                 case "session" -> fields.session = id(in.readString("session"), "session");
                 case "subscription" -> fields.subscription = id(in.readString("subscription"), "subscription");
                 case "operations" -> fields.operations = in.readOperations();
                 case "mode" -> fields.mode = in.readMode();
                 case "calls" -> {
-                    fields.calls = in.readStrings("calls", maxAcks);
-                    fields.calls.forEach(id -> id(id, "calls"));
+                    List<String> references = in.readStrings("calls", maxAcks);
+                    fields.calls = new java.util.ArrayList<>(references.size());
+                    fields.callContainers = new java.util.ArrayList<>(references.size());
+                    for (String text : references) {
+                        String[] reference = callReference(text, "calls");
+                        fields.calls.add(reference[0]);
+                        fields.callContainers.add(reference[1]);
+                    }
                 }
                 case "take" -> {
                     if (!top) {
@@ -77,6 +91,20 @@ final class RequestFields {
     }
 
     /** Checks an id: 1..128 characters of letters, digits, '-', '_', '.', ':'. */
+    /**
+     * A call reference: a call id, or {@code id/containerId} when the client names the container the call ran on
+     * (a clustered space then settles it there instead of asking every container).
+     *
+     * @return the id and the container id (null if none was named)
+     */
+    static String[] callReference(String value, String what) {
+        int slash = value.indexOf('/');
+        if (slash < 0) {
+            return new String[] {id(value, what), null};
+        }
+        return new String[] {id(value.substring(0, slash), what), id(value.substring(slash + 1), what + " container")};
+    }
+
     static String id(String value, String what) {
         if (value.isEmpty() || value.length() > MAX_ID_CHARS) {
             throw new WireFormatException(what + " id must have 1.." + MAX_ID_CHARS + " characters");

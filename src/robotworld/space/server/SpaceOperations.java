@@ -67,8 +67,17 @@ final class SpaceOperations {
             case "destroyContainer" -> state.space.destroyContainer(in.required(in.container, "container"));
             case "describe" -> describe(in, out);
             case "shift" -> shift(in, out);
-            case "ack" -> state.receipts.acknowledge(in.required(in.calls, "calls"));
-            case "cancel" -> cancel(in.required(in.call, "call"), out);
+            case "ack" -> {
+                List<String> calls = in.required(in.calls, "calls");
+                for (int i = 0; i < calls.size(); i++) {
+                    hint(calls.get(i), in.callContainers.get(i));
+                }
+                state.receipts.acknowledge(calls);
+            }
+            case "cancel" -> {
+                hint(in.required(in.call, "call"), in.callContainer);
+                cancel(in.call, out);
+            }
             case "subscribe" -> subscribe(in, out);
             case "unsubscribe" -> unsubscribe(in);
             case "endSession" -> endSession(in);
@@ -77,6 +86,13 @@ final class SpaceOperations {
             }
         }
         return true;
+    }
+
+    /** Tells the receipts where a client says its call ran, when it says so. */
+    private void hint(String callId, String container) {
+        if (container != null) {
+            state.receipts.hint(callId, container);
+        }
     }
 
     private void describe(RequestFields in, WireWriter out) {
