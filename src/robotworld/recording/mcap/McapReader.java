@@ -302,7 +302,7 @@ public final class McapReader implements Closeable {
          * The next schema, channel, message, attachment or metadata record, or null at the end of the data section
          * (or, in an unfinished file, at its last complete record: see {@link #cutOffAt()}).
          *
-         * @throws McapFormatException when a record is damaged, or a chunk is compressed
+         * @throws McapFormatException when a record is damaged, or a chunk's compression is unknown or damaged
          */
         public DataRecord next() throws IOException {
             while (true) {
@@ -381,12 +381,7 @@ public final class McapReader implements Closeable {
             long crc = record.u32();
             String compression = record.string();
             long recordsLength = record.u64();
-            if (!compression.isEmpty()) {
-                throw new McapFormatException(contentAt, "this chunk is compressed with " + compression
-                        + ", which this reader does not read; rewrite the file without compression first (e.g. with"
-                        + " the mcap command-line tool: mcap convert, or mcap decompress)");
-            }
-            if (recordsLength != uncompressedSize) {
+            if (compression.isEmpty() && recordsLength != uncompressedSize) {
                 throw new McapFormatException(contentAt, "an uncompressed chunk of " + recordsLength
                         + " bytes says it holds " + uncompressedSize);
             }
@@ -394,7 +389,9 @@ public final class McapReader implements Closeable {
             if (recordsLength > record.remaining()) {
                 throw new McapFormatException(contentAt, "a chunk's records run past the chunk");
             }
-            byte[] bytes = Arrays.copyOfRange(content, from, from + (int) recordsLength);
+            byte[] bytes = compression.isEmpty() ? Arrays.copyOfRange(content, from, from + (int) recordsLength)
+                    : ChunkCompression.open(compression, content, from, (int) recordsLength, uncompressedSize,
+                            contentAt);
             if (crc != 0) {
                 CRC32 check = new CRC32();
                 check.update(bytes);
@@ -404,7 +401,7 @@ public final class McapReader implements Closeable {
             }
             chunk = bytes;
             chunkPosition = 0;
-            chunkFileOffset = contentAt + from;
+            chunkFileOffset = contentAt + from; // in a compressed chunk, offsets in messages count uncompressed bytes
             chunks++;
         }
 

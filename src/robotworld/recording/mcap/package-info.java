@@ -12,10 +12,11 @@
  *       attachment and metadata indexes, grouped by opcode), summary offsets and the footer (with the summary's
  *       CRC32). A file is valid and fully indexed once closed; before that, what was flushed is readable by a
  *       linear scan ({@link robotworld.recording.mcap.McapReader} reports it as unfinished).</li>
- *   <li>{@link robotworld.recording.mcap.McapReader} reads any MCAP file whose chunks are uncompressed, with or
- *       without summary, chunks or indexes; records it does not know (newer or private opcodes) are skipped, as
- *       the format asks. A compressed chunk or a malformed file is an
- *       {@link robotworld.recording.mcap.McapFormatException} naming the byte offset, never a wrong result.</li>
+ *   <li>{@link robotworld.recording.mcap.McapReader} reads any MCAP file whose chunks are uncompressed or
+ *       compressed with zstd or lz4 (the compressions the specification names), with or without summary, chunks
+ *       or indexes; records it does not know (newer or private opcodes) are skipped, as the format asks. Another
+ *       compression or a malformed file is an {@link robotworld.recording.mcap.McapFormatException} naming the
+ *       byte offset, never a wrong result.</li>
  *   <li>Timestamps are nanoseconds since the Unix epoch. Strings are UTF-8.</li>
  * </ul>
  */

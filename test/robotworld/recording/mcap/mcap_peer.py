@@ -4,8 +4,9 @@
                               (schemas, channels, statistics, chunk/attachment/metadata indexes), the messages read
                               through the index (seeking, in log-time order) and by a linear stream read that checks
                               every CRC, attachments and metadata.
-  mcap_peer.py write FILE SPEC  writes FILE from SPEC (a JSON file: compression, schemas, channels, messages,
-                              metadata, attachments) with the reference writer.
+  mcap_peer.py write FILE SPEC  writes FILE from SPEC (a JSON file: compression none|zstd|lz4|default (the
+                              writer's own default), chunk_size, schemas, channels, messages, metadata,
+                              attachments) with the reference writer.
 """
 import base64
 import json
@@ -67,10 +68,15 @@ def read(path):
 def write(path, spec_path):
     with open(spec_path) as f:
         spec = json.load(f)
-    compression = {"none": CompressionType.NONE, "zstd": CompressionType.ZSTD,
-                   "lz4": CompressionType.LZ4}[spec.get("compression", "none")]
+    # "default": the writer as a user's script makes it, Writer(f), with the package's own defaults (zstd chunks)
+    options = {}
+    if spec.get("compression", "none") != "default":
+        options["compression"] = {"none": CompressionType.NONE, "zstd": CompressionType.ZSTD,
+                                  "lz4": CompressionType.LZ4}[spec.get("compression", "none")]
+    if "chunk_size" in spec:
+        options["chunk_size"] = spec["chunk_size"]
     with open(path, "wb") as f:
-        writer = Writer(f, compression=compression, chunk_size=spec.get("chunk_size", 1024 * 1024))
+        writer = Writer(f, **options)
         writer.start(profile=spec.get("profile", ""), library="python mcap peer")
         schema_ids = {}
         for s in spec["schemas"]:
