@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robotworld.recording.mcap.McapPeer;
@@ -22,6 +24,8 @@ import robotworld.space.Item;
 import robotworld.space.Order;
 import robotworld.space.Timeout;
 import robotworld.space.server.SpaceServer;
+import robotworld.telemetry.Schemas;
+import robotworld.telemetry.TrafficJson;
 import robotworld.testsupport.ProjectFiles;
 import robotworld.xvsm.CallTuple;
 
@@ -149,6 +153,84 @@ class RecordReplayCommandTest {
                 info);
         assertTrue(info.contains("indexed      yes"), info);
         assertTheReferenceReaderAgrees(file);
+    }
+
+    @Test
+    void aFileTheReferencePythonWriterWroteReplaysToTheConsoleInOrder() throws Exception {
+        // a user's script: the Python mcap package's Writer with its defaults (zstd chunks), our topics and schemas
+        Path file = folder.resolve("python.mcap");
+        McapPeer.require().write(file, pythonRecording(), folder);
+
+        assertEquals(0, rwe("record", "--info", file.toString()), err.toString());
+        String info = out.toString();
+        assertTrue(info.contains("written by python mcap peer"), info);
+        assertTrue(info.matches("(?s).*/CaterpillarRobot/Motor-Controller\\s+rwe.ModuleTraffic\\s+json\\s+6\\n.*"),
+                info);
+        assertTrue(info.matches("(?s).*/CaterpillarRobot/Bumper-Sensor\\s+rwe.ModuleTraffic\\s+json\\s+2\\n.*"),
+                info);
+
+        out.getBuffer().setLength(0);
+        assertEquals(0, rwe("replay", file.toString(), "--console", "--foxglove-port", "-1", "-q"), err.toString());
+        String replay = out.toString();
+        // every request and answer is played, over the time the log times span
+        assertTrue(replay.contains("replaying " + file + ": 8 messages over 0.3 s"), replay);
+        assertTrue(replay.contains("# REPLAY of python.mcap"), replay);
+        // the console prints answers; each module's answers keep their recorded order
+        assertEquals(List.of("setMotor 1 +0.250", "setMotor 1 -0.400", "setMotor 1 +0.000"),
+                answers(replay, "Motor-Controller"));
+        assertEquals(List.of("getAllBumper 40"), answers(replay, "Bumper-Sensor"));
+    }
+
+    /**
+     * Three motor calls (speed 250, -400 and 0 per mille) and a bumper read answering 40, each request followed by
+     * its answer 10 ms later, 100 ms apart, with the world's description attached as {@code rwe record} does.
+     */
+    private static ObjectNode pythonRecording() throws Exception {
+        ObjectNode spec = TrafficJson.MAPPER.createObjectNode();
+        spec.put("compression", "default");
+        spec.putArray("schemas").addObject().put("name", "rwe.ModuleTraffic").put("encoding", "jsonschema")
+                .put("data", Schemas.text("rwe.ModuleTraffic"));
+        ArrayNode channels = spec.putArray("channels");
+        for (String module : List.of("Motor-Controller", "Bumper-Sensor")) {
+            channels.addObject().put("topic", "/CaterpillarRobot/" + module).put("message_encoding", "json")
+                    .put("schema", "rwe.ModuleTraffic");
+        }
+        long t0 = 1_764_000_000_000_000_000L;
+        spec.putArray("attachments").addObject().put("name", "world.xml").put("media_type", "application/xml")
+                .put("log_time", t0).put("data", Files.readString(ProjectFiles.resolve(
+                        "docs/examples/chapter5-world.xml")));
+        ArrayNode messages = spec.putArray("messages");
+        int[] speeds = {250, -400, 0};
+        for (int i = 0; i < speeds.length; i++) {
+            call(messages, t0 + i * 100_000_000L, "Motor-Controller", "MotorModule", "laptop#a." + i, "setMotor",
+                    List.of(1, speeds[i]), List.of(1, speeds[i]));
+        }
+        call(messages, t0 + 300_000_000L, "Bumper-Sensor", "BumperModule", "laptop#a.3", "getAllBumper",
+                List.of(0), List.of(40));
+        return spec;
+    }
+
+    private static void call(ArrayNode messages, long at, String module,
+            String moduleClass, String key, String function, List<Integer> arguments, List<Integer> values) {
+        for (String kind : List.of("request", "answer")) {
+            ObjectNode traffic = TrafficJson.MAPPER.createObjectNode()
+                    .put("kind", kind).put("participant", "CaterpillarRobot").put("module", module)
+                    .put("module_class", moduleClass).put("key", key).put("host", "laptop").put("function", function);
+            (kind.equals("request") ? arguments : values).forEach(traffic.putArray("fields")::add);
+            messages.addObject().put("topic", "/CaterpillarRobot/" + module)
+                    .put("log_time", kind.equals("request") ? at : at + 10_000_000L).put("data", traffic.toString());
+        }
+    }
+
+    /** The console monitor's answer lines of {@code module}, as "function value", in the order printed. */
+    private static List<String> answers(String console, String module) {
+        List<String> found = new ArrayList<>();
+        java.util.regex.Matcher line = java.util.regex.Pattern.compile("(?m)^\\S+\\s+CaterpillarRobot\\s+"
+                + java.util.regex.Pattern.quote(module) + "\\s+(\\S+)\\s+(.*?)\\s+\\(laptop\\)$").matcher(console);
+        while (line.find()) {
+            found.add(line.group(1) + " " + line.group(2));
+        }
+        return found;
     }
 
     /**
