@@ -10,6 +10,8 @@ import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import robotworld.observe.WorldTap;
 import robotworld.recording.SimWorld;
+import robotworld.sim.robot.Pose;
+import robotworld.sim.robot.SimIRDistanceModule;
 import robotworld.xvsm.XVSMMotorModuleRemote;
 import robotworld.xvsm.XVSMRuntime;
 
@@ -83,6 +85,107 @@ class FoxgloveBridgeTest {
                 tap.close();
             }
         }
+    }
+
+    @Test
+    void theReferenceClientGetsTheSimulatedRobotsPoseAndIrRaysAsTheSimulatorHasThem() throws Exception {
+        List<String> ir = List.of("/SimBot/ir/4.1", "/SimBot/ir/4.2", "/SimBot/ir/4.3");
+        List<String> subscribed = new java.util.ArrayList<>(List.of("/SimBot/pose"));
+        subscribed.addAll(ir);
+        try (SimWorld world = SimWorld.start();
+             FoxgloveBridge bridge = FoxgloveBridge.start(SimWorld.LAYOUT, FoxgloveBridge.Options.defaults()
+                     .port(0))) {
+            WorldTap tap = new WorldTap(world.space(), SimWorld.LAYOUT).add(bridge.observer()).start();
+            try (FoxglovePeer client = FoxglovePeer.connect(bridge.uri(), subscribed.toArray(String[]::new))) {
+                // the IR channels are advertised with the first frame that has rays: one per sensor
+                awaitSubscriptions(bridge, subscribed.size());
+                Set<String> advertised = client.events("advertise").stream().flatMap(a -> topics(a).stream())
+                        .collect(Collectors.toSet());
+                assertEquals(Set.copyOf(ir), advertised.stream().filter(t -> t.startsWith("/SimBot/ir/"))
+                        .collect(Collectors.toSet()), "one LaserScan channel per IR sensor of the robot");
+
+                // the robot turns on its left wheel, then stops: its pose is no longer the one it started in
+                XVSMMotorModuleRemote motor = new XVSMMotorModuleRemote(world.host("laptop"), SimWorld.ROBOT,
+                        "Motor");
+                motor.setMotor(1, 0.5);
+                Thread.sleep(500);
+                motor.setMotor(1, 0);
+                Pose still = standingStill(world);
+                long stillSince = System.currentTimeMillis() * 1_000_000L;
+                assertTrue(Math.abs(angleBetween(still.heading(), 0)) > 5, "the robot turned: " + still);
+
+                JsonNode pose = client.await(e -> e.path("topic").asText().equals("/SimBot/pose")
+                        && receiveTime(e) >= stillSince, "a pose taken after the robot stopped");
+                assertEquals("foxglove.PoseInFrame", pose.get("schemaName").asText());
+                assertEquals("arena", pose.at("/data/frame_id").asText());
+                // frames travel through the space in whole millimetres and hundredths of a degree
+                assertEquals(still.x() / 1000, pose.at("/data/pose/position/x").asDouble(), 0.001, pose.toString());
+                assertEquals(still.y() / 1000, pose.at("/data/pose/position/y").asDouble(), 0.001, pose.toString());
+                assertEquals(0, angleBetween(still.heading(), yaw(pose.at("/data/pose/orientation"))), 0.5,
+                        pose.toString());
+
+                SimIRDistanceModule sensors = (SimIRDistanceModule) world.robot().module(4);
+                double[] mounted = {0, 90, -90}; // SimWorld's sensors 1..3
+                for (int sensor = 1; sensor <= 3; sensor++) {
+                    String topic = ir.get(sensor - 1);
+                    JsonNode scan = client.await(e -> e.path("topic").asText().equals(topic)
+                            && receiveTime(e) >= stillSince, "a scan of " + topic + " after the robot stopped");
+                    assertEquals("foxglove.LaserScan", scan.get("schemaName").asText());
+                    assertEquals("SimBot", scan.at("/data/frame_id").asText(), "in the robot's frame");
+                    assertEquals(1, scan.at("/data/ranges").size(), "one ray per sensor: " + scan);
+                    double range = scan.at("/data/ranges/0").asDouble();
+                    assertTrue(range >= 0 && range <= 0.8, "within the sensor's 800 mm: " + scan);
+                    int seen = sensor;
+                    int simulated = world.robot().simulation().inspect(w -> sensors.distance(seen));
+                    assertEquals(simulated / 1000.0, range, 0.0005, topic + " as the simulator measures it");
+                    assertEquals(0, angleBetween(mounted[sensor - 1], yaw(scan.at("/data/pose/orientation"))), 0.01,
+                            topic + " points where its sensor is mounted: " + scan);
+                }
+
+                // every message in the order of its timestamp, which is the one in its data
+                List<JsonNode> messages = client.events("message");
+                assertTrue(messages.size() >= 20, "frames for a second at least: " + messages.size());
+                long previous = 0;
+                for (JsonNode message : messages) {
+                    long time = receiveTime(message);
+                    assertTrue(time >= previous, "in timestamp order: " + time + " after " + previous);
+                    previous = time;
+                    assertEquals(time, message.at("/data/timestamp/sec").asLong() * 1_000_000_000L
+                            + message.at("/data/timestamp/nsec").asLong(), message.toString());
+                }
+            } finally {
+                tap.close();
+            }
+        }
+    }
+
+    /** The simulator's pose once two readings 200 ms apart agree (within 10 s). */
+    private static Pose standingStill(SimWorld world) throws InterruptedException {
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        Pose before = world.robot().pose();
+        while (true) {
+            Thread.sleep(200);
+            Pose now = world.robot().pose();
+            if (now.equals(before)) {
+                return now;
+            }
+            assertTrue(System.nanoTime() < deadline, "the robot did not stop: " + now);
+            before = now;
+        }
+    }
+
+    private static long receiveTime(JsonNode message) {
+        return Long.parseLong(message.path("receiveTime").asText("0"));
+    }
+
+    /** The heading, in degrees, of a rotation about z given as a quaternion. */
+    private static double yaw(JsonNode orientation) {
+        return Math.toDegrees(2 * Math.atan2(orientation.get("z").asDouble(), orientation.get("w").asDouble()));
+    }
+
+    /** The difference of two headings in degrees, -180..180. */
+    private static double angleBetween(double a, double b) {
+        return Math.IEEEremainder(a - b, 360);
     }
 
     private static Set<String> topics(JsonNode advertise) {
