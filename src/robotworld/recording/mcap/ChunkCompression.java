@@ -1,6 +1,7 @@
 package robotworld.recording.mcap;
 
 import com.github.luben.zstd.Zstd;
+import com.github.luben.zstd.ZstdException;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -41,6 +42,8 @@ final class ChunkCompression {
         long result;
         try {
             result = Zstd.decompressByteArray(records, 0, size, data, from, length);
+        } catch (ZstdException e) {
+            throw new McapFormatException(offset, "a zstd chunk cannot be decompressed: " + e.getMessage());
         } catch (LinkageError e) {
             // zstd-jni carries native code for the common platforms only
             throw new McapFormatException(offset, "this chunk is compressed with zstd, and zstd cannot be loaded on"

@@ -1,6 +1,7 @@
 package robotworld.recording.mcap;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -97,6 +98,47 @@ class McapInteropTest {
             }
             assertEquals(summary.chunks().size(), reader.scan().statistics().chunkCount());
         }
+    }
+
+    @Test
+    void anUnknownCompressionOrADamagedChunkIsAnErrorNeverAWrongResult() throws Exception {
+        McapPeer peer = McapPeer.require();
+        Path file = temp.resolve("zstd.mcap");
+        peer.write(file, spec("zstd"), temp);
+        byte[] bytes = java.nio.file.Files.readAllBytes(file);
+        int name = indexOf(bytes, new byte[] {4, 0, 0, 0, 'z', 's', 't', 'd'}); // the first chunk's compression
+        assertTrue(name > 0);
+
+        byte[] unknown = bytes.clone();
+        unknown[name + 4] = 'x';
+        McapFormatException e = assertThrows(McapFormatException.class, () -> messagesOf(unknown, "unknown.mcap"));
+        assertTrue(e.getMessage().contains("compressed with 'xstd'"), e.getMessage());
+
+        byte[] damaged = bytes.clone();
+        damaged[name + 8 + 8 + 20] ^= 0x5A; // inside the compressed records
+        e = assertThrows(McapFormatException.class, () -> messagesOf(damaged, "damaged.mcap"));
+        assertTrue(e.getMessage().contains("zstd chunk") || e.getMessage().contains("CRC"), e.getMessage());
+    }
+
+    private List<Message> messagesOf(byte[] bytes, String name) throws Exception {
+        Path file = temp.resolve(name);
+        java.nio.file.Files.write(file, bytes);
+        try (McapReader reader = McapReader.open(file)) {
+            return McapRoundTripTest.messages(reader);
+        }
+    }
+
+    private static int indexOf(byte[] bytes, byte[] wanted) {
+        outer:
+        for (int i = 0; i + wanted.length <= bytes.length; i++) {
+            for (int j = 0; j < wanted.length; j++) {
+                if (bytes[i + j] != wanted[j]) {
+                    continue outer;
+                }
+            }
+            return i;
+        }
+        return -1;
     }
 
     private static JsonNode spec(String compression) {
