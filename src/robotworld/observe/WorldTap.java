@@ -17,6 +17,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robotworld.safety.Heartbeat;
+import robotworld.safety.SafetyContainers;
 import robotworld.space.Capi;
 import robotworld.space.ContainerRef;
 import robotworld.space.ContainerSpec;
@@ -38,9 +40,11 @@ import robotworld.xvsm.MalformedCallException;
  * Reads one world's traffic from a space and hands it to {@link WorldObserver}s (the contract is in the package
  * documentation). For every module it subscribes to the REQUEST container (requests written and taken: the queue
  * length, and when a call started) and the ANSWER container (answers, error answers, published local calls); for
- * every robot to its {@code GROUNDTRUTH} container. Containers are looked up or created, so the tap may start
- * before or after the programs it watches; what the ANSWER and GROUNDTRUTH containers already hold is handed over
- * first ({@link AnswerSeen#earlier()}).
+ * every robot to its {@code GROUNDTRUTH} container; and to the programs' heartbeats
+ * ({@value robotworld.safety.SafetyContainers#LIVENESS}), which tell whether the programs serving a participant run
+ * ({@link Liveness}). Containers are looked up or created, so the tap may start before or after the programs it
+ * watches; what the ANSWER and GROUNDTRUTH containers already hold is handed over first
+ * ({@link AnswerSeen#earlier()}).
  *
  * <p>Notifications arrive on the space's threads and are queued (bounded: {@value #QUEUE_CAPACITY} events) for
  * the tap's dispatch thread, which calls the observers. So a slow observer never holds up the space's delivery;
@@ -56,7 +60,10 @@ import robotworld.xvsm.MalformedCallException;
  */
 public final class WorldTap implements AutoCloseable {
 
-    /** How long without a sign of life before a participant is no longer {@link Liveness.State#ALIVE}. */
+    /**
+     * Without heartbeats: how long without a sign of life in the traffic before a participant is no longer
+     * {@link Liveness.State#ALIVE}, and how long a request may wait before it is {@link Liveness.State#NOT_ANSWERING}.
+     */
     public static final Duration DEFAULT_LIVENESS_WINDOW = Duration.ofSeconds(3);
     /** Events that may wait for the dispatch thread before new ones are dropped. */
     public static final int QUEUE_CAPACITY = 20_000;
@@ -84,6 +91,8 @@ public final class WorldTap implements AutoCloseable {
     // ---- state of the dispatch thread only ----
     private final Map<ModuleRef, ModuleState> modules = new LinkedHashMap<>();
     private final Map<String, ParticipantState> participants = new LinkedHashMap<>();
+    /** Filled by the space's delivery threads, judged by the dispatch thread (it is thread-safe). */
+    private final ServingPrograms programs;
     private long lastTick = System.nanoTime();
 
     /** A tap of {@code layout}'s containers in {@code space}, with the default liveness window. */
@@ -108,6 +117,7 @@ public final class WorldTap implements AutoCloseable {
                 modules.put(module, new ModuleState(module));
             }
         }
+        programs = new ServingPrograms(participants.keySet());
         dispatcher = new Thread(this::dispatch, "world-tap " + layout.world());
         dispatcher.setDaemon(true);
     }
@@ -168,6 +178,13 @@ public final class WorldTap implements AutoCloseable {
                     post(() -> deliverGap(new Gap(Instant.now(), null, -1, "cannot watch "
                             + GroundTruthTuples.containerName(robot) + ": " + e.getMessage(), false)));
                 }
+            }
+            try {
+                watchHeartbeats();
+            } catch (SpaceException e) {
+                first = first == null ? e : first;
+                post(() -> deliverGap(new Gap(Instant.now(), null, -1, "cannot watch " + SafetyContainers.LIVENESS
+                        + " (liveness then rests on the traffic alone): " + e.getMessage(), false)));
             }
             watching = first == null && !closed;
         } finally {
@@ -268,6 +285,36 @@ public final class WorldTap implements AutoCloseable {
                 post(() -> deliverFrame(entry));
             }
         }, null);
+    }
+
+    /**
+     * The heartbeats every program shifts into {@value SafetyContainers#LIVENESS}: those already there (perhaps a
+     * dead program's) count from now; each new one is a sign of life, noted on arrival so that a busy dispatch
+     * thread does not make a running program look silent.
+     */
+    private void watchHeartbeats() {
+        ContainerSpec spec = SafetyContainers.livenessSpec();
+        ContainerRef container = space.lookupOrCreateContainer(spec);
+        Instant now = Instant.now();
+        long nanos = System.nanoTime();
+        for (Entry entry : space.read(container, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL))) {
+            heard(entry, now, nanos, false);
+        }
+        subscribe(container, PUBLISHING, () -> spec, notification -> {
+            Instant at = Instant.now();
+            long arrived = System.nanoTime();
+            for (Entry entry : notification.entries()) {
+                heard(entry, at, arrived, true);
+            }
+        }, null);
+    }
+
+    private void heard(Entry entry, Instant at, long nanos, boolean arrived) {
+        try {
+            programs.heard(Heartbeat.parse(entry), at, nanos, arrived);
+        } catch (IllegalArgumentException e) {
+            LOG.debug("ignoring an entry of {} that is not a heartbeat: {}", SafetyContainers.LIVENESS, entry);
+        }
     }
 
     /** The spec the runtime creates a REQUEST container with: FIFO, unbounded. */
@@ -555,7 +602,10 @@ public final class WorldTap implements AutoCloseable {
         }
     }
 
-    /** What the dispatch thread knows about one participant's liveness. */
+    /**
+     * What the dispatch thread knows about one participant's liveness. Heartbeats come first: they tell a silent
+     * (killed, frozen, cut off) or ended program apart from an idle one. Without them, the traffic tells what it can.
+     */
     private final class ParticipantState {
         private final String name;
         private Instant lastSign;
@@ -580,23 +630,46 @@ public final class WorldTap implements AutoCloseable {
                     oldestWait = module.waitingSince;
                 }
             }
+            ServingPrograms.Verdict heartbeats = programs.verdict(name, now);
             Liveness.State next;
             String basis;
-            if (oldestWait >= 0 && now - oldestWait > livenessWindowNanos) {
+            Instant sign = lastSign;
+            if (heartbeats != null && heartbeats.state() != Liveness.State.ALIVE && !answeredSince(heartbeats)) {
+                next = heartbeats.state();
+                basis = heartbeats.basis();
+                sign = later(lastSign, heartbeats.lastSign());
+            } else if (oldestWait >= 0 && now - oldestWait > livenessWindowNanos) {
                 next = Liveness.State.NOT_ANSWERING;
                 basis = "a request has waited " + (now - oldestWait) / 1_000_000_000L + " s";
+            } else if (heartbeats != null && heartbeats.state() == Liveness.State.ALIVE) {
+                next = Liveness.State.ALIVE;
+                basis = heartbeats.basis();
+                sign = later(lastSign, heartbeats.lastSign());
             } else if (lastSign != null && now - lastSignNanos <= livenessWindowNanos) {
                 next = Liveness.State.ALIVE;
                 basis = "answers";
             } else {
                 next = Liveness.State.UNKNOWN;
-                basis = lastSign == null ? "no answer seen yet" : "quiet";
+                basis = lastSign == null ? "no heartbeat and no answer seen yet" : "quiet";
             }
             if (next != state) {
                 state = next;
-                Liveness event = new Liveness(name, next, lastSign, basis);
+                Liveness event = new Liveness(name, next, sign, basis);
                 each(observer -> observer.liveness(event));
             }
+        }
+
+        /**
+         * Whether its modules kept answering well after the program of the heartbeats fell silent or ended: then
+         * another program serves them, one without heartbeats, and the traffic is believed.
+         */
+        private boolean answeredSince(ServingPrograms.Verdict heartbeats) {
+            return lastSign != null
+                    && lastSignNanos - heartbeats.heardNanos() > ServingPrograms.LEAST_SILENCE.toNanos();
+        }
+
+        private static Instant later(Instant a, Instant b) {
+            return a == null ? b : b == null || a.isAfter(b) ? a : b;
         }
     }
 }

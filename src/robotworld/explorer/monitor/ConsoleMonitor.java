@@ -213,6 +213,8 @@ public final class ConsoleMonitor implements AutoCloseable, WorldObserver {
     private static String words(Liveness.State state) {
         return switch (state) {
             case ALIVE -> "alive";
+            case SILENT -> "SILENT";
+            case ENDED -> "ended";
             case NOT_ANSWERING -> "NOT ANSWERING";
             case UNKNOWN -> "quiet";
         };

@@ -35,6 +35,7 @@ import robotworld.explorer.monitor.gui.MotorModulePanel;
 import robotworld.explorer.monitor.gui.OnOffIndicator;
 import robotworld.explorer.monitor.gui.ParticipantWindow;
 import robotworld.explorer.monitor.gui.ServoModulePanel;
+import robotworld.explorer.monitor.gui.StatusStrip;
 import robotworld.explorer.monitor.gui.X10ApplianceModulePanel;
 import robotworld.explorer.monitor.gui.X10LampModulePanel;
 import robotworld.space.Capi;
@@ -291,6 +292,25 @@ class WorldMonitorTest {
         // no more calls: the rate falls back to 0 once they are older than its window
         eventually("the rate falls to 0", Duration.ofSeconds(30), () -> Double.parseDouble(
                 (String) figure(window, "Motor-Controller", 3)) == 0);
+    }
+
+    @Test
+    void theStatusStripTellsAnIdleProgramFromOneThatEnded() throws Exception {
+        MonitorWindow window = monitor.window();
+        // nothing calls the room's modules: its program's heartbeats alone say it runs
+        eventually("the idle room alive", () -> participantText(window, ROOM).equals("● DimRoom: alive"));
+        assertTrue(onEdt(() -> window.statusStrip().participantLabel(ROOM).getToolTipText())
+                .startsWith("heartbeats of room-pc#"));
+        assertEquals(StatusStrip.ALIVE, onEdt(() -> window.statusStrip().participantLabel(ROOM).getForeground()));
+        room.close(); // its last heartbeat says it ended
+        eventually("the room ended", () -> participantText(window, ROOM).equals("● DimRoom: ended"));
+        assertEquals("● CaterpillarRobot: alive", onEdt(() -> participantText(window, ROBOT)),
+                "the robot's program runs on");
+    }
+
+    private static String participantText(MonitorWindow window, String participant) {
+        window.statusStrip().refresh();
+        return window.statusStrip().participantLabel(participant).getText();
     }
 
     /** What the status strip's table shows for {@code module} in {@code column}, read on the Swing thread. */

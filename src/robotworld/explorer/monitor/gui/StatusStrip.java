@@ -23,17 +23,20 @@ import robotworld.explorer.monitor.TrafficStatistics;
 import robotworld.observe.Liveness;
 
 /**
- * The status strip at the bottom of the monitor window: which participants are alive (a green dot while their
- * Local sides answer, red while a request to them waits unserved, grey while quiet) and, per module, its queue,
- * calls per second, median latency, errors and last answer. Refreshed twice a second from
+ * The status strip at the bottom of the monitor window: which participants are alive (a green dot while the
+ * programs serving them send heartbeats, red when one has fallen silent or a request to them waits unserved, dark
+ * grey once they ended, light grey while nothing tells) and, per module, its queue, calls per second, median
+ * latency, errors and last answer; the dot's tooltip says what it rests on. Refreshed twice a second from
  * {@link TrafficStatistics}. Swing thread only.
  */
 public final class StatusStrip extends JPanel {
 
-    /** The dot of a participant whose Local sides answer. */
+    /** The dot of a participant whose programs run. */
     public static final Color ALIVE = new Color(0x2E, 0xA8, 0x5A);
-    /** The dot of a participant with a request waiting unserved. */
+    /** The dot of a participant with a silent program, or a request waiting unserved. */
     public static final Color NOT_ANSWERING = new Color(0xE0, 0x3A, 0x3E);
+    /** The dot of a participant whose programs ended. */
+    public static final Color ENDED = new Color(0x5C, 0x63, 0x6E);
     /** The dot of a quiet participant. */
     public static final Color UNKNOWN = new Color(0x9A, 0xA1, 0xAB);
     /** Rows shown without scrolling: a world's every module up to this many. */
@@ -154,6 +157,8 @@ public final class StatusStrip extends JPanel {
     public static String words(Liveness.State state) {
         return switch (state) {
             case ALIVE -> "alive";
+            case SILENT -> "SILENT";
+            case ENDED -> "ended";
             case NOT_ANSWERING -> "NOT ANSWERING";
             case UNKNOWN -> "quiet";
         };
@@ -163,7 +168,8 @@ public final class StatusStrip extends JPanel {
     public static Color colour(Liveness.State state) {
         return switch (state) {
             case ALIVE -> ALIVE;
-            case NOT_ANSWERING -> NOT_ANSWERING;
+            case SILENT, NOT_ANSWERING -> NOT_ANSWERING;
+            case ENDED -> ENDED;
             case UNKNOWN -> UNKNOWN;
         };
     }
