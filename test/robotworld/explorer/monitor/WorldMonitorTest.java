@@ -34,10 +34,12 @@ import robotworld.explorer.monitor.gui.ParticipantPanel;
 import robotworld.explorer.monitor.gui.MotorModulePanel;
 import robotworld.explorer.monitor.gui.OnOffIndicator;
 import robotworld.explorer.monitor.gui.ParticipantWindow;
+import robotworld.explorer.monitor.gui.PlotsPanel;
 import robotworld.explorer.monitor.gui.ServoModulePanel;
 import robotworld.explorer.monitor.gui.StatusStrip;
 import robotworld.explorer.monitor.gui.X10ApplianceModulePanel;
 import robotworld.explorer.monitor.gui.X10LampModulePanel;
+import robotworld.observe.ModuleRef;
 import robotworld.space.Capi;
 import robotworld.xvsm.XVSMBumperModuleLocal;
 import robotworld.xvsm.XVSMBumperModuleRemote;
@@ -306,6 +308,35 @@ class WorldMonitorTest {
         eventually("the room ended", () -> participantText(window, ROOM).equals("● DimRoom: ended"));
         assertEquals("● CaterpillarRobot: alive", onEdt(() -> participantText(window, ROBOT)),
                 "the robot's program runs on");
+    }
+
+    @Test
+    void pausedPlotsGainNoPointsWhileValuesArriveAndShowThemOnceResumed() throws Exception {
+        PlotsPanel plots = monitor.window().plots();
+        ModuleRef motorModule = new ModuleRef(ROBOT, "Motor-Controller", "MotorModule");
+        MotorModule motor = new XVSMMotorModuleRemote(laptop, ROBOT, "Motor-Controller");
+        motor.setMotor(1, 0.25);
+        eventually("the first value is plotted", () -> {
+            plots.reveal(motorModule);
+            plots.refresh();
+            return plots.pointsShown(motorModule) >= 1;
+        });
+        onEdt(() -> plots.pauseButton().doClick()); // as a user does, with the mouse or Alt+U
+        assertEquals("Resume plots", onEdt(() -> plots.pauseButton().getText()));
+        int frozen = onEdt(() -> plots.pointsShown(motorModule));
+        for (int i = 0; i < 10; i++) {
+            motor.setMotor(1, i % 2 == 0 ? -0.25 : 0.25);
+        }
+        TimeSeries collected = monitor.plotModel().of(motorModule).channels().get(1);
+        eventually("the values are still collected", () -> collected.size() >= 11);
+        Thread.sleep(1_200); // two rounds of the refresh timer, which must leave a paused chart alone
+        onEdt(plots::refresh);
+        assertEquals(frozen, onEdt(() -> plots.pointsShown(motorModule)), "a paused plot gains no points");
+
+        onEdt(() -> plots.pauseButton().doClick());
+        assertEquals("Pause plots", onEdt(() -> plots.pauseButton().getText()));
+        eventually("resumed, it shows the values that came meanwhile",
+                () -> plots.pointsShown(motorModule) >= frozen + 10);
     }
 
     private static String participantText(MonitorWindow window, String participant) {
