@@ -24,7 +24,7 @@ public class BumperModulePanel extends ModulePanel {
         super("BumperModule", moduleName);
         JPanel grid = new JPanel(new GridLayout(0, 2, 6, 4));
         for (int i = 0; i < sensors.length; i++) {
-            sensors[i] = new JTextField("Sensor" + (i + 1), 8);
+            sensors[i] = new JTextField("Bumper " + (i + 1), 8); // as the world view and the plots name it
             sensors[i].setEditable(false);
             sensors[i].setBackground(UNKNOWN);
             sensors[i].getAccessibleContext().setAccessibleName("bumper " + (i + 1));
@@ -48,7 +48,7 @@ public class BumperModulePanel extends ModulePanel {
         }
         JTextField field = sensors[bumper - 1];
         field.setBackground(contact ? CONTACT : FREE);
-        field.setText("Sensor" + bumper + (contact ? " contact" : " free"));
+        field.setText("Bumper " + bumper + (contact ? " contact" : " free"));
     }
 
     /** The background of bumper {@code bumper} (1-based): {@link #FREE}, {@link #CONTACT} or {@link #UNKNOWN}. */

@@ -7,8 +7,8 @@ import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.GridLayout;
 import java.awt.RenderingHints;
-import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
+import java.awt.geom.Point2D;
 import java.util.Arrays;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
@@ -19,8 +19,9 @@ import robotworld.core.IRDistanceModule;
 /**
  * An IR distance module: per sensor a bar as long as the distance it measures (coloured near/middle/far as the
  * world view's rays) and the value in millimetres, or the raw reading when only {@code getAllSensors_ByteRep} was
- * called (thesis figure 4.12, drawn); beside them the rays around the robot, heading up, at the sensor angles the
- * monitor assumes ({@link WorldView#ASSUMED_SENSOR_ANGLES}).
+ * called (thesis figure 4.12, drawn); beside them the rays around the robot, heading up (the body's white wedge
+ * points forward, as in the world view), at the sensor angles the monitor assumes
+ * ({@link WorldView#ASSUMED_SENSOR_ANGLES}).
  */
 public class IRDistanceModulePanel extends ModulePanel {
 
@@ -124,8 +125,7 @@ public class IRDistanceModulePanel extends ModulePanel {
                     g.draw(new Line2D.Double(cx + dx * body, cy + dy * body, cx + dx * (body + length),
                             cy + dy * (body + length)));
                 }
-                g.setColor(WorldView.BODY);
-                g.fill(new Ellipse2D.Double(cx - body, cy - body, 2 * body, 2 * body));
+                WorldView.paintBody(g, new Point2D.Double(cx, cy), body, 90);
             } finally {
                 g.dispose();
             }

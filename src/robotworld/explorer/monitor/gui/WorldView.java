@@ -69,6 +69,10 @@ public final class WorldView extends JComponent {
     static final int FRAMES_PER_SECOND = 25;
     private static final long FLASH_NANOS = 700_000_000L;
     private static final int MARGIN = 28;
+    /** Above the arena: the caption. */
+    private static final int CAPTION = 18;
+    /** Below it: the legend, which no ray's number may cover. */
+    private static final int LEGEND = 16;
     private static final double NUMBER_RADIUS = 7;
     private static final Color BACKGROUND = new Color(0xEE, 0xF0, 0xF3);
     private static final Color FLOOR = Color.WHITE;
@@ -219,10 +223,10 @@ public final class WorldView extends JComponent {
             height = Math.max(height, frame.arena().height());
         }
         double available = Math.max(1, getWidth() - 2 * MARGIN);
-        double availableHeight = Math.max(1, getHeight() - 2 * MARGIN - 18);
+        double availableHeight = Math.max(1, getHeight() - 2 * MARGIN - CAPTION - LEGEND);
         double scale = Math.min(available / width, availableHeight / height);
         double left = (getWidth() - width * scale) / 2;
-        double bottom = MARGIN + 18 + (availableHeight + height * scale) / 2;
+        double bottom = MARGIN + CAPTION + (availableHeight + height * scale) / 2;
         return new Mapping(scale, left, bottom);
     }
 
@@ -407,8 +411,10 @@ public final class WorldView extends JComponent {
                 g.fill(new Ellipse2D.Double(startX + length * dx - 3.5, startY + length * dy - 3.5, 7, 7));
             }
             double at = Math.max(radius + length + NUMBER_RADIUS + 4, ringOuter(radius) + NUMBER_RADIUS + 2);
+            // inside the view, off the caption and the legend
             double x = Math.max(NUMBER_RADIUS + 1, Math.min(getWidth() - NUMBER_RADIUS - 1, centre.getX() + at * dx));
-            double y = Math.max(NUMBER_RADIUS + 1, Math.min(getHeight() - NUMBER_RADIUS - 1, centre.getY() + at * dy));
+            double y = Math.max(CAPTION + NUMBER_RADIUS + 4, Math.min(getHeight() - LEGEND - NUMBER_RADIUS - 4,
+                    centre.getY() + at * dy));
             numbers.add(new Object[] {x, y, colour, (int) ray[3]});
         }
         g.setFont(getFont().deriveFont(Font.BOLD, 10f));
@@ -453,8 +459,8 @@ public final class WorldView extends JComponent {
             Rectangle2D plate = new Rectangle2D.Double(centre.getX() + reach * cos - width / 2,
                     centre.getY() - reach * sin - height / 2, width, height);
             double cost = 0;
-            if (plate.getMinX() < 0 || plate.getMinY() < 24 || plate.getMaxX() > getWidth()
-                    || plate.getMaxY() > getHeight() - 18) {
+            if (plate.getMinX() < 0 || plate.getMinY() < CAPTION + 6 || plate.getMaxX() > getWidth()
+                    || plate.getMaxY() > getHeight() - LEGEND - 2) {
                 cost += 1000; // off the view, or over the caption or the legend
             }
             for (Shape shape : clutter) {
@@ -479,7 +485,8 @@ public final class WorldView extends JComponent {
         return best;
     }
 
-    private static void paintBody(Graphics2D g, Point2D centre, double radius, double heading) {
+    /** A robot's body: a disc with a white wedge pointing where it heads (degrees, counter-clockwise from +x). */
+    static void paintBody(Graphics2D g, Point2D centre, double radius, double heading) {
         g.setColor(BODY);
         g.fill(new Ellipse2D.Double(centre.getX() - radius, centre.getY() - radius, 2 * radius, 2 * radius));
         // the heading: a white wedge near the front, leaving the centre in the body's colour
