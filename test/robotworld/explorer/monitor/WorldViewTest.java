@@ -12,6 +12,7 @@ import java.awt.geom.Point2D;
 import java.awt.image.BufferedImage;
 import java.time.Duration;
 import java.nio.file.Path;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -40,6 +41,7 @@ import robotworld.bus.IRDistanceModuleProxy;
 import robotworld.bus.ServoModuleProxy;
 import robotworld.core.IRDistanceModule;
 import robotworld.core.ServoModule;
+import robotworld.explorer.monitor.gui.BumperModulePanel;
 import robotworld.explorer.monitor.gui.IRDistanceModulePanel;
 import robotworld.xvsm.XVSMIRDistanceModuleLocal;
 import robotworld.xvsm.XVSMIRDistanceModuleRemote;
@@ -60,6 +62,9 @@ import robotworld.xvsm.XVSMRuntime;
  * bumper modules on the simulated bus, a laptop drives it through the space into the crate, the simulator publishes
  * its ground truth, and the pixels of the world view must show the robot where it stopped, touching with its front
  * bumpers; the plots must gain the values.
+ *
+ * <p>It also takes the user guide's pictures of the monitor: {@code build/screenshots/docs-NAME.png} is
+ * {@code docs/images/NAME.png}; copy them over when the monitor's looks change.
  */
 class WorldViewTest {
 
@@ -133,15 +138,17 @@ class WorldViewTest {
         long deadline = System.nanoTime() + Duration.ofSeconds(20).toNanos();
         do { // as a control program does: command the tracks on every round, which also feeds the watchdog
             assertTrue(System.nanoTime() < deadline, "the robot reached the crate, at " + robot.pose());
-            command(() -> motor.setMotor(1, 1.0));
-            command(() -> motor.setMotor(2, 1.0));
+            // steer at the middle of the crate's face: the two tracks start one call apart (longer on a busy
+            // machine), which turns the robot, and unsteered it may reach a wall instead
+            double error = steeringError(robot.pose(), 2000, 1000);
+            command(() -> motor.setMotor(1, Math.max(-1, Math.min(1, 1.0 - error / 20))));
+            command(() -> motor.setMotor(2, Math.max(-1, Math.min(1, 1.0 + error / 20))));
             Thread.sleep(20);
         } while (bumper.getAllBumper() == 0); // 1250 mm at 300 mm/s, four times as fast: about a second
         command(() -> motor.setMotor(1, 0));
         command(() -> motor.setMotor(2, 0));
-        // straight ahead is the crate; a robot that turned on the way (the two tracks start one call apart) stops at
-        // a wall instead: either way it stopped where its front bumpers touch, and that is what is checked
-        assertTrue(Math.abs(robot.pose().x() - STOP_X) < 5 || robot.pose().x() > STOP_X, "stopped at " + robot.pose());
+        assertEquals(STOP_X, robot.pose().x(), 5, "stopped against the crate's face at " + robot.pose());
+        assertEquals(1000, robot.pose().y(), 200 - 20, "in front of the crate, at " + robot.pose());
 
         eventually("the view has the frame at the crate", Duration.ofSeconds(10), () -> {
             GroundTruth frame = view.frameOf(ROBOT);
@@ -149,7 +156,7 @@ class WorldViewTest {
         });
         Thread.sleep(900); // let the contact flash fade: the ring itself is what is checked
         onEdt(() -> view.repaint());
-        BufferedImage image = ImageIO.read(screenshot(view, "world-view-robot-at-crate").toFile());
+        BufferedImage image = ImageIO.read(screenshot(view, "docs-monitor-world-view-bump").toFile());
         GroundTruth frame = onEdt(() -> view.frameOf(ROBOT));
 
         Point2D centre = onEdt(() -> view.toScreen(frame.body().x(), frame.body().y()));
@@ -162,12 +169,24 @@ class WorldViewTest {
         // every mounted bumper on the ring around the body: red where the frame says it touches, grey where not
         double pixelsPerMm = onEdt(() -> view.toScreen(1, 0).getX() - view.toScreen(0, 0).getX());
         double ring = 150 * pixelsPerMm + Math.max(3, 150 * pixelsPerMm * 0.12);
-        assertTrue(frame.bumpers().stream().anyMatch(b -> b.contact() && (b.number() == 4 || b.number() == 6)),
-                "a front bumper touches the crate: " + frame.bumpers());
+        assertEquals(List.of(4, 6), frame.bumpers().stream().filter(GroundTruth.Bumper::contact)
+                .map(GroundTruth.Bumper::number).toList(), "head-on, both front bumpers touch the crate (the user"
+                + " guide says so): " + frame.bumpers());
         for (GroundTruth.Bumper b : frame.bumpers()) {
             assertColour(b.contact() ? WorldView.CONTACT : WorldView.FREE, image,
                     onRing(centre, ring, frame.body().heading() + b.angle()), "bumper " + b.number());
         }
+
+        // the bumper panel of that moment, for the user guide: the front bumpers in contact, the others free
+        assertEquals(1 << 3 | 1 << 5, bumper.getAllBumper());
+        BumperModulePanel bumperPanel = monitor.monitors().stream().map(Monitor::getPanel)
+                .filter(BumperModulePanel.class::isInstance).map(BumperModulePanel.class::cast).findFirst()
+                .orElseThrow();
+        eventually("the bumper panel shows 4 and 6 in contact", () -> bumperPanel.colourOf(4)
+                .equals(BumperModulePanel.CONTACT) && bumperPanel.colourOf(6).equals(BumperModulePanel.CONTACT)
+                && bumperPanel.colourOf(1).equals(BumperModulePanel.FREE));
+        onEdt(() -> showTabOf(bumperPanel, window));
+        screenshot(bumperPanel, "docs-panel-BumperModule");
 
         // the plots gained the motor commands and the bumper readings
         ModuleRef motorModule = new ModuleRef(ROBOT, "Motor-Controller", "MotorModule");
@@ -224,8 +243,8 @@ class WorldViewTest {
             window.validate();
             return null;
         });
-        screenshot(view, "docs-world-view-moving"); // first: the quicker one, both of about the same moment
-        screenshot(window, "docs-monitor-window-moving");
+        screenshot(view, "docs-monitor-world-view"); // first: the quicker one, both of about the same moment
+        screenshot(window, "docs-monitor-window");
         command(() -> motor.setMotor(1, 0));
         command(() -> motor.setMotor(2, 0));
         Thread.sleep(300); // the robot comes to rest (ramps)
@@ -256,7 +275,7 @@ class WorldViewTest {
             window.validate();
             return null;
         });
-        screenshot(window, "docs-monitor-window");
+        screenshot(window, "monitor-window-at-rest");
         // at the default size, what a researcher looks at is in view without scrolling or dragging a divider
         onEdt(() -> {
             javax.swing.JTable table = window.statusStrip().table();
@@ -268,11 +287,11 @@ class WorldViewTest {
             assertTrue(view.getHeight() >= 300, "the world view is " + view.getHeight() + " px high");
             return null;
         });
-        screenshot(view, "docs-world-view");
+        screenshot(view, "world-view-at-rest");
         screenshot(panel, "docs-panel-IRDistanceModule");
         for (Monitor each : monitor.monitors()) {
             if (each.getPanel() instanceof robotworld.explorer.monitor.gui.ModulePanel modulePanel
-                    && !(modulePanel instanceof IRDistanceModulePanel)) {
+                    && !(modulePanel instanceof IRDistanceModulePanel) && !(modulePanel instanceof BumperModulePanel)) {
                 onEdt(() -> showTabOf(modulePanel, window)); // a panel in a hidden tab paints black
                 screenshot(modulePanel, "docs-panel-" + modulePanel.moduleClass());
             }
@@ -289,6 +308,13 @@ class WorldViewTest {
         } catch (robotworld.xvsm.ActuatorStoppedException stopped) {
             call.run();
         }
+    }
+
+    /** Degrees to turn left to head for {@code (x, y)} from {@code pose}, in (-180, 180]. */
+    private static double steeringError(robotworld.sim.robot.Pose pose, double x, double y) {
+        double bearing = Math.toDegrees(Math.atan2(y - pose.y(), x - pose.x()));
+        double error = (bearing - pose.heading()) % 360;
+        return error > 180 ? error - 360 : error <= -180 ? error + 360 : error;
     }
 
     /** Selects, in every tabbed pane above {@code component}, the tab it is on, and lays the window out again. */
