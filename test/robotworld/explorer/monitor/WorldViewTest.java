@@ -11,9 +11,11 @@ import java.awt.Color;
 import java.awt.geom.Point2D;
 import java.awt.image.BufferedImage;
 import java.time.Duration;
+import java.time.Instant;
 import java.nio.file.Path;
 import java.util.List;
 import javax.imageio.ImageIO;
+import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -235,7 +237,24 @@ class WorldViewTest {
             head.setServo(1, 90 + (step++ % 20 - 10) * 4);
             Thread.sleep(40);
         }
-        // while it still drives: the track arrows show
+        IRDistanceModulePanel panel = monitor.monitors().stream().map(Monitor::getPanel)
+                .filter(IRDistanceModulePanel.class::isInstance).map(IRDistanceModulePanel.class::cast).findFirst()
+                .orElseThrow();
+        // A photograph of the robot on its way. The IR panel shows the last reading the program took, the world
+        // view where the robot is now: a robot that drives on after that reading (as it does while a window is
+        // painted) has both disagree by what it travelled meanwhile. So the simulated clock stops: the world stands
+        // still while the program reads its sensors once more and the window is painted, and both show one
+        // instant. The motors keep their speeds, so the track arrows show.
+        robot.simulation().close();
+        double frozen = robot.simulation().simulatedSeconds();
+        Instant asked = Instant.now();
+        String frozenReading = ir.getAllSensors();
+        bumper.getAllBumper();
+        eventually("the IR panel shows the reading, the world view a frame, of the frozen instant", () -> {
+            Instant reported = panel.freshness().lastReport();
+            return reported != null && !reported.isBefore(asked) && shownReading(panel).equals(frozenReading)
+                    && Math.abs(view.frameOf(ROBOT).simulatedSeconds() - frozen) < 1e-5;
+        });
         onEdt(() -> {
             window.plots().refresh();
             window.statusStrip().refresh();
@@ -243,8 +262,18 @@ class WorldViewTest {
             window.validate();
             return null;
         });
-        screenshot(view, "docs-monitor-world-view"); // first: the quicker one, both of about the same moment
-        screenshot(window, "docs-monitor-window");
+        screenshot(view, "docs-monitor-world-view");
+        BufferedImage photograph = ImageIO.read(screenshot(window, "docs-monitor-window").toFile());
+        assertIrPanelAgreesWithTheRays(photograph, window, panel);
+        for (Monitor each : monitor.monitors()) { // the panels of that instant too: motors and sensors in use
+            if (each.getPanel() instanceof robotworld.explorer.monitor.gui.ModulePanel modulePanel
+                    && !(modulePanel instanceof BumperModulePanel)) { // the bumpers' picture is taken at the crate
+                onEdt(() -> showTabOf(modulePanel, window)); // a panel in a hidden tab paints black
+                screenshot(modulePanel, "docs-panel-" + modulePanel.moduleClass());
+            }
+        }
+        robot.simulation().start();
+
         command(() -> motor.setMotor(1, 0));
         command(() -> motor.setMotor(2, 0));
         Thread.sleep(300); // the robot comes to rest (ramps)
@@ -252,9 +281,6 @@ class WorldViewTest {
         GroundTruth frame = robotworld.observe.GroundTruthTuples.decode(space.connection().read(
                 space.connection().lookupContainer("CaterpillarRobotGROUNDTRUTH"), robotworld.space.Timeout.TRY_ONCE)
                 .get(0));
-        IRDistanceModulePanel panel = monitor.monitors().stream().map(Monitor::getPanel)
-                .filter(IRDistanceModulePanel.class::isInstance).map(IRDistanceModulePanel.class::cast).findFirst()
-                .orElseThrow();
         eventually("the IR panel shows the last reading", () -> panel.valueText(1).equals(
                 reading.split(" ")[0] + " mm"));
         for (GroundTruth.Ray ray : frame.rays()) {
@@ -288,14 +314,6 @@ class WorldViewTest {
             return null;
         });
         screenshot(view, "world-view-at-rest");
-        screenshot(panel, "docs-panel-IRDistanceModule");
-        for (Monitor each : monitor.monitors()) {
-            if (each.getPanel() instanceof robotworld.explorer.monitor.gui.ModulePanel modulePanel
-                    && !(modulePanel instanceof IRDistanceModulePanel) && !(modulePanel instanceof BumperModulePanel)) {
-                onEdt(() -> showTabOf(modulePanel, window)); // a panel in a hidden tab paints black
-                screenshot(modulePanel, "docs-panel-" + modulePanel.moduleClass());
-            }
-        }
     }
 
     /**
@@ -308,6 +326,85 @@ class WorldViewTest {
         } catch (robotworld.xvsm.ActuatorStoppedException stopped) {
             call.run();
         }
+    }
+
+    /** The seven distances the IR panel shows, as {@code getAllSensors} gives them. */
+    private static String shownReading(IRDistanceModulePanel panel) {
+        List<String> distances = new java.util.ArrayList<>();
+        for (int sensor = 1; sensor <= IRDistanceModule.SENSORS; sensor++) {
+            distances.add(panel.valueText(sensor).replace(" mm", ""));
+        }
+        return String.join(" ", distances);
+    }
+
+    /**
+     * Sensor by sensor, in one picture of the window: the IR panel's distance is the one the world view's ray
+     * measures, its bar has the ray's colour, and a ray that meets something ends, in the world view, where the
+     * panel's distance says.
+     */
+    private static void assertIrPanelAgreesWithTheRays(BufferedImage photograph, MonitorWindow window,
+            IRDistanceModulePanel panel) {
+        onEdt(() -> {
+            WorldView view = window.worldView();
+            GroundTruth frame = view.frameOf(ROBOT);
+            Point2D centre = view.toScreen(frame.body().x(), frame.body().y());
+            double scale = view.toScreen(1, 0).getX() - view.toScreen(0, 0).getX();
+            double radius = frame.body().radius() * scale;
+            double ring = radius + Math.max(3, radius * 0.12) + 4;
+            assertEquals(IRDistanceModule.SENSORS, frame.rays().size());
+            for (GroundTruth.Ray ray : frame.rays()) {
+                int sensor = ray.sensor();
+                String what = "sensor " + sensor + " (ray " + ray + ")";
+                assertEquals(Math.round(ray.length()) + " mm", panel.valueText(sensor), what + ": the same distance");
+                double distance = panel.bar(sensor).value();
+                assertEquals(ray.length(), distance, 0.5, what + ": the bar's length");
+                Color colour = WorldView.rayColour(ray.length(), ray.range());
+                ValueBarPixels bar = new ValueBarPixels(panel.bar(sensor), window);
+                if (bar.filledWidth(distance) >= 4) {
+                    assertTrue(colourNear(photograph, bar.middleOfFill(distance), colour), what + ": the bar is "
+                            + colour + " as the ray");
+                }
+                double direction = Math.toRadians(frame.body().heading() + ray.angle());
+                double reach = radius + distance * scale;
+                if (ray.hits() && reach > ring + 6) {
+                    Point2D end = SwingUtilities.convertPoint(view, new java.awt.Point(
+                            (int) Math.round(centre.getX() + reach * Math.cos(direction)),
+                            (int) Math.round(centre.getY() - reach * Math.sin(direction))), window.getRootPane());
+                    assertTrue(colourNear(photograph, end, colour), what + ": the ray ends, in "
+                            + colour + ", " + distance + " mm from the body, at " + end);
+                }
+            }
+            return null;
+        });
+    }
+
+    /** Where a panel's bar is in a picture of the window, and what it looks like there. */
+    private record ValueBarPixels(robotworld.explorer.monitor.gui.ValueBar bar, MonitorWindow window) {
+
+        /** Pixels of the bar filled for {@code distance} of the panel's 800 mm. */
+        double filledWidth(double distance) {
+            return Math.min(distance, WorldView.ASSUMED_RANGE) / WorldView.ASSUMED_RANGE * (bar.getWidth() - 1);
+        }
+
+        Point2D middleOfFill(double distance) {
+            return SwingUtilities.convertPoint(bar, new java.awt.Point((int) Math.round(filledWidth(distance) / 2),
+                    bar.getHeight() / 2), window.getRootPane());
+        }
+    }
+
+    /** Whether a pixel of {@code colour} is at {@code point} or next to it (antialiased edges blend). */
+    private static boolean colourNear(BufferedImage image, Point2D point, Color colour) {
+        for (int dx = -1; dx <= 1; dx++) {
+            for (int dy = -1; dy <= 1; dy++) {
+                int x = (int) Math.round(point.getX()) + dx;
+                int y = (int) Math.round(point.getY()) + dy;
+                if (x >= 0 && y >= 0 && x < image.getWidth() && y < image.getHeight()
+                        && image.getRGB(x, y) == colour.getRGB()) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /** Degrees to turn left to head for {@code (x, y)} from {@code pose}, in (-180, 180]. */
