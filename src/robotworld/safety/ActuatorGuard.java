@@ -231,10 +231,21 @@ public final class ActuatorGuard {
      * @return the stop record, with what was done (or {@code failed: ...})
      */
     public StopRecord stop(StopCause cause, String reason, String forCommander, String request) {
+        return stop(cause, reason, forCommander, request, false);
+    }
+
+    /**
+     * {@link #stop} and, with {@code hold}, {@linkplain #hold holds} the actuator from the same moment: no command
+     * slips in between to be told "command it again" while it is held.
+     */
+    public StopRecord stop(StopCause cause, String reason, String forCommander, String request, boolean hold) {
         StopRecord record = new StopRecord(clock.instant(), participant, module, cause, reason, "", ownId,
                 forCommander, request);
         synchronized (lock) {
             epoch++;
+            if (hold && held == null) {
+                held = record;
+            }
             if (cause.endsTheProgram()) {
                 ended = record;
             } else if (cause == StopCause.COMMANDER_SILENT || cause == StopCause.COMMANDER_ENDED) {
@@ -270,6 +281,9 @@ public final class ActuatorGuard {
             if (ended == record) {
                 ended = done;
             }
+            if (held == record) {
+                held = done;
+            }
         }
         listener.stopped(done);
         return done;
@@ -277,8 +291,8 @@ public final class ActuatorGuard {
 
     /**
      * Holds the actuator in its safe state: every command is refused with {@code why} until {@link #release}; a
-     * command under way is undone when it completes ({@link #performed}). Call it after {@link #stop} for an
-     * engaged actuator. A second hold keeps the first reason.
+     * command under way is undone when it completes ({@link #performed}). An engaged actuator is stopped and held
+     * at once by {@link #stop(StopCause, String, String, String, boolean)}. A second hold keeps the first reason.
      */
     public void hold(StopRecord why) {
         Objects.requireNonNull(why, "why");

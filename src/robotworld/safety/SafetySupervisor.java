@@ -638,10 +638,7 @@ public final class SafetySupervisor implements AutoCloseable {
                 return true;
             }
             spaceLost(sinceContact, always);
-            StopRecord stop = guard.stop(StopCause.SPACE_LOST, reason, null, null);
-            if (always) {
-                guard.hold(stop);
-            }
+            guard.stop(StopCause.SPACE_LOST, reason, null, null, always);
             return true;
         }
         if (always && !guard.isHeld()) {

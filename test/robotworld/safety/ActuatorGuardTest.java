@@ -140,8 +140,7 @@ class ActuatorGuardTest {
     @Test
     void aHeldActuatorRefusesEveryCommandTellingWhyUntilReleased() {
         command("robot-pc#own", true, 450);
-        StopRecord stop = guard.stop(StopCause.SPACE_LOST, "no contact with the space", null, null);
-        guard.hold(stop);
+        guard.stop(StopCause.SPACE_LOST, "no contact with the space", null, null, true);
         for (int i = 0; i < 3; i++) {
             ActuatorGuard.Admission refused = guard.admit("robot-pc#own", true);
             assertFalse(refused.admitted(), "held: refused every time, not only once");
