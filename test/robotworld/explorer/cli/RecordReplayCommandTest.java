@@ -1,21 +1,41 @@
 package robotworld.explorer.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.net.ConnectException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import robotworld.description.DescriptionLoader;
+import robotworld.explorer.monitor.MonitoredWorld;
+import robotworld.explorer.monitor.WorldLayouts;
+import robotworld.observe.AnswerSeen;
+import robotworld.observe.ModuleRef;
+import robotworld.observe.RequestSeen;
+import robotworld.observe.WorldLayout;
+import robotworld.recording.Recorder;
 import robotworld.recording.mcap.McapPeer;
 import robotworld.space.ContainerRef;
 import robotworld.space.ContainerSpec;
@@ -27,6 +47,7 @@ import robotworld.space.server.SpaceServer;
 import robotworld.telemetry.Schemas;
 import robotworld.telemetry.TrafficJson;
 import robotworld.testsupport.ProjectFiles;
+import robotworld.testsupport.ThreadsLeft;
 import robotworld.xvsm.CallTuple;
 
 /** rwe record, rwe record --info and rwe replay as a person runs them. */
@@ -181,6 +202,187 @@ class RecordReplayCommandTest {
         assertEquals(List.of("getAllBumper 40"), answers(replay, "Bumper-Sensor"));
     }
 
+    /** The console lines of {@link #recordMotorCalls}' four answers, in the recorded order. */
+    private static final List<String> LOOPED = List.of("setMotor 1 +0.250", "setMotor 1 -0.400", "setMotor 1 +0.100",
+            "setMotor 1 +0.000");
+
+    @Test
+    void replayWithLoopPlaysTheRunAgainAndAgainAsAReplayUntilCtrlC() throws Exception {
+        Path file = folder.resolve("loop.mcap");
+        recordMotorCalls(file);
+        Set<Thread> before = ThreadsLeft.now();
+        Running replay = new Running("replay", file.toString(), "--loop", "--rate", "4", "--console",
+                "--foxglove-port", "-1");
+        Running watcher = null;
+        try {
+            String space = replay.await("(?m)^replay space at (http://\\S+)$");
+            assertFalse(ThreadsLeft.since(before, name -> name.startsWith("space-server")).isEmpty(),
+                    "the replay's own threads are told apart");
+            assertTrue(replay.out.toString().contains("replaying " + file + ": 8 messages over 0.3 s of Chapter5World,"
+                    + " at 4x, looping"), replay.toString());
+            // the console here: the run twice at least, in order, after the mark
+            replay.awaitTrue(() -> answers(replay.out.toString(), "Motor-Controller").size() >= 2 * LOOPED.size(),
+                    "the recorded calls twice");
+            assertTrue(replay.out.toString().contains("# REPLAY of loop.mcap (recorded "), replay.toString());
+            assertTrue(replay.out.toString().indexOf("# REPLAY of loop.mcap") < replay.out.toString()
+                    .indexOf("Motor-Controller"), "marked before the first call: " + replay);
+            List<String> seen = answers(replay.out.toString(), "Motor-Controller");
+            for (int i = 0; i < seen.size(); i++) {
+                assertEquals(LOOPED.get(i % LOOPED.size()), seen.get(i), "pass after pass, in order: " + seen);
+            }
+            // the progress line counts the passes
+            replay.awaitTrue(() -> lastPass(replay.err.toString()) >= 3, "a progress line of pass 3 or later");
+
+            // someone who starts watching now, in a later pass, with the command the replay printed, is told too
+            Matcher watch = Pattern.compile("(?m)^watch it: rwe monitor (\\S+) --space (\\S+)$")
+                    .matcher(replay.out.toString());
+            assertTrue(watch.find(), replay.toString());
+            assertEquals(space, watch.group(2));
+            watcher = new Running("monitor", watch.group(1), "--space", space, "--console");
+            Running late = watcher;
+            late.awaitTrue(() -> live(late).size() >= 2 * LOOPED.size(), "the watcher seeing two passes");
+            assertTrue(late.out.toString().startsWith("# REPLAY of loop.mcap (recorded "), late.toString());
+            List<String> watched = live(late);
+            int first = LOOPED.indexOf(watched.get(0));
+            for (int i = 0; i < watched.size(); i++) {
+                assertEquals(LOOPED.get((first + i) % LOOPED.size()), watched.get(i), "in order: " + watched);
+            }
+            assertEquals(0, late.stop(10_000), late.toString());
+
+            long stopping = System.nanoTime();
+            assertEquals(0, replay.stop(10_000), replay.toString());
+            long stoppedMillis = (System.nanoTime() - stopping) / 1_000_000;
+            assertTrue(stoppedMillis < 5_000, "Ctrl-C took " + stoppedMillis + " ms" + replay);
+            assertTrue(replay.err.toString().matches("(?s).*\\nreplay stopped after \\d+\\.\\d s\\n"),
+                    replay.toString());
+            // the replay space is gone with it
+            URI uri = URI.create(space);
+            try (Socket socket = new Socket()) {
+                socket.connect(new InetSocketAddress(uri.getHost(), uri.getPort()), 5_000);
+                throw new AssertionError("the replay space still listens at " + space);
+            } catch (ConnectException expected) {
+                // closed
+            }
+        } finally {
+            replay.close();
+            if (watcher != null) {
+                watcher.close();
+            }
+        }
+        // nothing of it runs on: its space server, console monitor, taps, the watcher (the JVM's shared pools aside)
+        ThreadsLeft.assertNoneSince(before, name -> !name.startsWith("ForkJoinPool.commonPool")
+                && !name.equals("process reaper"));
+    }
+
+    /** The motor answers a console monitor printed as they came (not those it found there when it started). */
+    private static List<String> live(Running monitor) {
+        return answers(monitor.out.toString().lines().filter(line -> !line.startsWith("earlier"))
+                .collect(java.util.stream.Collectors.joining("\n")), "Motor-Controller");
+    }
+
+    /** The highest pass number of the progress lines so far, 0 when there is none. */
+    private static int lastPass(String err) {
+        Matcher pass = Pattern.compile("\\rpass (\\d+): ").matcher(err);
+        int last = 0;
+        while (pass.find()) {
+            int number = Integer.parseInt(pass.group(1));
+            assertTrue(number >= last, "pass numbers only grow: " + err);
+            last = number;
+        }
+        return last;
+    }
+
+    /**
+     * A run of Chapter5World as {@code rwe record} writes it, with our Recorder: four calls of the laptop setting
+     * motor 1 to 250, -400, 100 and 0 per mille, 100 ms apart, each answered 10 ms after its request.
+     */
+    private static void recordMotorCalls(Path file) throws Exception {
+        Path description = ProjectFiles.resolve("docs/examples/chapter5-world.xml");
+        WorldLayout layout = WorldLayouts.of(MonitoredWorld.of(DescriptionLoader.loadWorld(description)));
+        ModuleRef motor = layout.modules().stream().filter(m -> m.name().equals("Motor-Controller")).findFirst()
+                .orElseThrow();
+        int[] speeds = {250, -400, 100, 0};
+        Instant t0 = Instant.parse("2026-01-05T10:00:00Z");
+        try (Recorder recorder = Recorder.start(file, new Recorder.Start(layout, "http://127.0.0.1:9876/space",
+                Files.readAllBytes(description)), Recorder.Options.defaults())) {
+            for (int i = 0; i < speeds.length; i++) {
+                CallTuple call = CallTuple.of("laptop#loop." + i, "setMotor", 1, speeds[i]);
+                Instant asked = t0.plusMillis(100L * i);
+                recorder.observer().requestSeen(new RequestSeen(motor, call, asked, 1));
+                recorder.observer().answerSeen(new AnswerSeen(motor, call, asked.plusMillis(10), false,
+                        Duration.ofMillis(10), 0));
+            }
+        }
+    }
+
+    /** An {@code rwe} verb running on a thread of its own, as in a terminal; {@link #stop} is its Ctrl-C. */
+    private static final class Running implements AutoCloseable {
+        final StringWriter out = new StringWriter();
+        final StringWriter err = new StringWriter();
+        final AtomicInteger exit = new AtomicInteger(Integer.MIN_VALUE);
+        final AtomicReference<Throwable> failure = new AtomicReference<>();
+        final Thread thread;
+
+        Running(String... args) {
+            thread = new Thread(() -> {
+                try {
+                    exit.set(Rwe.run(new PrintWriter(out, true), new PrintWriter(err, true), args));
+                } catch (Throwable e) {
+                    failure.set(e);
+                }
+            }, "rwe " + args[0]);
+            thread.start();
+        }
+
+        /** The first group of {@code pattern} in the output, once it is there (within 30 s). */
+        String await(String pattern) throws InterruptedException {
+            Pattern wanted = Pattern.compile(pattern);
+            String[] found = new String[1];
+            awaitTrue(() -> {
+                Matcher matcher = wanted.matcher(out.toString());
+                found[0] = matcher.find() ? matcher.group(1) : null;
+                return found[0] != null;
+            }, "'" + pattern + "'");
+            return found[0];
+        }
+
+        /** Waits (up to 30 s) until {@code condition} holds, while the command runs. */
+        void awaitTrue(java.util.function.BooleanSupplier condition, String what) throws InterruptedException {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (!condition.getAsBoolean()) {
+                assertTrue(thread.isAlive(), "ended (" + exit + ") before " + what + ": " + this);
+                assertTrue(System.nanoTime() < deadline, "not " + what + " within 30 s: " + this);
+                Thread.sleep(20);
+            }
+        }
+
+        /** Stops it as Ctrl-C does in-process (its thread is interrupted); its exit code, once it ended. */
+        int stop(long withinMillis) throws InterruptedException {
+            thread.interrupt();
+            thread.join(withinMillis);
+            assertFalse(thread.isAlive(), "still running " + withinMillis + " ms after Ctrl-C: " + this);
+            assertEquals(null, failure.get());
+            return exit.get();
+        }
+
+        @Override
+        public void close() {
+            if (thread.isAlive()) {
+                thread.interrupt();
+                try {
+                    thread.join(30_000);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }
+
+        @Override
+        public String toString() {
+            return "\n--- out:\n" + out + "\n--- err:\n" + err;
+        }
+    }
+
     /**
      * Three motor calls (speed 250, -400 and 0 per mille) and a bumper read answering 40, each request followed by
      * its answer 10 ms later, 100 ms apart, with the world's description attached as {@code rwe record} does.
@@ -311,5 +513,6 @@ class RecordReplayCommandTest {
                 err.toString());
         assertTrue(!Files.exists(folder.resolve("y.mcap")), "nothing recorded, nothing left behind");
         assertTrue(!err.toString().contains("\tat "), "no stack trace: " + err);
+
     }
 }
