@@ -182,8 +182,13 @@ public final class FoxgloveBridge implements AutoCloseable {
         try {
             connector.open();
         } catch (IOException e) {
+            // the reason ("Address already in use") is the innermost cause; each command names its own option
+            Throwable reason = e;
+            while (reason.getCause() != null && reason.getCause().getMessage() != null) {
+                reason = reason.getCause();
+            }
             throw new IllegalStateException("cannot listen on " + options.bindAddress() + ":" + options.port()
-                    + " for Foxglove: " + e.getMessage() + " (choose another with --foxglove-port)", e);
+                    + " for Foxglove: " + reason.getMessage(), e);
         }
         String host = options.bindAddress();
         if (host.equals("0.0.0.0") || host.equals("::")) {

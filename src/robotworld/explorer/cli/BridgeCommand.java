@@ -1,6 +1,7 @@
 package robotworld.explorer.cli;
 
 import java.io.PrintWriter;
+import java.net.BindException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -117,10 +118,26 @@ final class BridgeCommand implements Callable<Integer> {
             out.println("Foxglove endpoint stopped after " + bridge.published() + " messages"
                     + (bridge.dropped() > 0 ? " (" + bridge.dropped() + " dropped for slow clients)" : ""));
         } catch (IllegalStateException e) {
-            err.println("rwe bridge: " + e.getMessage());
+            endpointFailed(err, "bridge", e, "--port P (0: any free one)");
             return 1;
         }
         return 0;
+    }
+
+    /**
+     * Says why the Foxglove endpoint (or, for rwe bridge, the command) could not start: the message, and when the
+     * port is taken, the fix with {@code portOption}, the option of {@code verb} that chooses it.
+     */
+    static void endpointFailed(PrintWriter err, String verb, IllegalStateException failure, String portOption) {
+        err.println("rwe " + verb + ": " + failure.getMessage());
+        for (Throwable cause = failure.getCause(); cause != null; cause = cause.getCause()) {
+            if (cause instanceof BindException) {
+                err.println("Stop the program that uses it (another rwe bridge or rwe replay?), or choose another port"
+                        + " with " + portOption + ".");
+                break;
+            }
+        }
+        err.flush();
     }
 
     private void awaitStop() {

@@ -167,8 +167,14 @@ final class ReplayCommand implements Callable<Integer> {
         try {
             replayer.prepare(server.space(), options); // the views started next see the replay mark
             if (foxglovePort >= 0) {
-                bridge = FoxgloveBridge.start(replayer.layout(), FoxgloveBridge.Options.defaults().port(foxglovePort)
-                        .bindAddress(bind).token(token));
+                try {
+                    bridge = FoxgloveBridge.start(replayer.layout(), FoxgloveBridge.Options.defaults()
+                            .port(foxglovePort).bindAddress(bind).token(token));
+                } catch (IllegalStateException e) {
+                    // --port is the replay space's: name the endpoint's own option
+                    BridgeCommand.endpointFailed(err, "replay", e, "--foxglove-port P (0: any free one; -1: none)");
+                    return 1;
+                }
                 bridgeTap = new WorldTap(server.space(), replayer.layout()).add(bridge.observer()).start();
                 bridgeSafety = SafetyTelemetry.start(server.space(), bridge::publish);
                 out.println("Foxglove endpoint at " + bridge.uri());

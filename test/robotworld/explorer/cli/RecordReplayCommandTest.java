@@ -7,7 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.net.ConnectException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.URI;
 import java.nio.file.Files;
@@ -514,5 +516,18 @@ class RecordReplayCommandTest {
         assertTrue(!Files.exists(folder.resolve("y.mcap")), "nothing recorded, nothing left behind");
         assertTrue(!err.toString().contains("\tat "), "no stack trace: " + err);
 
+        // the Foxglove endpoint's port is taken (by an rwe bridge, say): the option to choose another is named
+        Path recorded = folder.resolve("z.mcap");
+        recordMotorCalls(recorded);
+        try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            err.getBuffer().setLength(0);
+            out.getBuffer().setLength(0);
+            assertEquals(1, rwe("replay", recorded.toString(), "--foxglove-port", String.valueOf(taken.getLocalPort()),
+                    "-q"), out + "" + err);
+            // not --port: that is the replay space's
+            assertEquals("rwe replay: cannot listen on 127.0.0.1:" + taken.getLocalPort() + " for Foxglove: Address"
+                    + " already in use\nStop the program that uses it (another rwe bridge or rwe replay?), or choose"
+                    + " another port with --foxglove-port P (0: any free one; -1: none).\n", err.toString());
+        }
     }
 }
