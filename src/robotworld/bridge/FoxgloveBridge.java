@@ -135,11 +135,16 @@ public final class FoxgloveBridge implements AutoCloseable {
     private final WorldObserver observer;
     private final byte[] token;
 
-    // ---- guarded by this ----
+    // ---- guarded by this (a client's lock may be held when taking it, never the other way round) ----
     private final Map<String, Integer> channelIds = new LinkedHashMap<>();
     private final Map<Integer, Topic> channels = new LinkedHashMap<>();
-    private final Map<Integer, TelemetryMessage> latest = new HashMap<>();
+    private final Map<Integer, Published> latest = new HashMap<>();
+    private long sequence;
     private ReplayMark replay;
+
+    /** A message as published: numbered, so that a client that subscribes meanwhile gets it exactly once. */
+    private record Published(long sequence, TelemetryMessage message) {
+    }
 
     private FoxgloveBridge(WorldLayout layout, Options options) {
         this.layout = layout;
@@ -274,10 +279,12 @@ public final class FoxgloveBridge implements AutoCloseable {
         List<Client> targets;
         int channel;
         boolean isNew;
+        Published numbered;
         synchronized (this) {
             isNew = !channelIds.containsKey(message.topic().name());
             channel = channel(message.topic());
-            latest.put(channel, message);
+            numbered = new Published(++sequence, message);
+            latest.put(channel, numbered);
         }
         if (isNew) {
             String advertise = advertise(List.of(channel));
@@ -286,7 +293,7 @@ public final class FoxgloveBridge implements AutoCloseable {
         published.incrementAndGet();
         targets = List.copyOf(clients);
         for (Client client : targets) {
-            client.deliver(channel, message);
+            client.deliver(channel, numbered);
         }
     }
 
@@ -436,6 +443,8 @@ public final class FoxgloveBridge implements AutoCloseable {
         private volatile Session session;
         /** channel id -> subscription id; guarded by this client. */
         private final Map<Integer, Integer> subscriptions = new HashMap<>();
+        /** channel id -> the sequence number of the last message sent on it; guarded by this client. */
+        private final Map<Integer, Long> sentUpTo = new HashMap<>();
         private final AtomicLong inFlight = new AtomicLong();
         private final AtomicLong dropped = new AtomicLong();
         private long droppedReported;
@@ -489,15 +498,17 @@ public final class FoxgloveBridge implements AutoCloseable {
             for (JsonNode entry : list) {
                 int id = entry.path("id").asInt(-1);
                 int channel = entry.path("channelId").asInt(-1);
-                TelemetryMessage last;
-                synchronized (FoxgloveBridge.this) {
-                    if (!channels.containsKey(channel)) {
-                        sendText(status(2, "no channel " + channel));
-                        continue;
-                    }
-                    last = latest.get(channel);
-                }
+                // under this client's lock from reading the latest message to sending it: a message published
+                // meanwhile is delivered after it (deliver waits for the lock), and only if it is newer
                 synchronized (this) {
+                    Published last;
+                    synchronized (FoxgloveBridge.this) {
+                        if (!channels.containsKey(channel)) {
+                            sendText(status(2, "no channel " + channel));
+                            continue;
+                        }
+                        last = latest.get(channel);
+                    }
                     if (id < 0 || subscriptions.containsValue(id)) {
                         sendText(status(2, "subscription id " + id + " is invalid or in use"));
                         continue;
@@ -510,8 +521,9 @@ public final class FoxgloveBridge implements AutoCloseable {
                         continue;
                     }
                     subscriptions.put(channel, id);
+                    sentUpTo.put(channel, last == null ? 0L : last.sequence());
                     if (last != null) {
-                        send(id, last);
+                        send(id, last.message());
                     }
                 }
             }
@@ -532,12 +544,16 @@ public final class FoxgloveBridge implements AutoCloseable {
             }
         }
 
-        /** Sends a message to this client if it subscribed to the channel. */
-        void deliver(int channel, TelemetryMessage message) {
+        /**
+         * Sends a message to this client if it subscribed to the channel, unless it was sent already (as the latest
+         * message when the subscription began).
+         */
+        void deliver(int channel, Published published) {
             synchronized (this) {
                 Integer subscription = subscriptions.get(channel);
-                if (subscription != null) {
-                    send(subscription, message);
+                if (subscription != null && published.sequence() > sentUpTo.getOrDefault(channel, 0L)) {
+                    sentUpTo.put(channel, published.sequence());
+                    send(subscription, published.message());
                 }
             }
         }

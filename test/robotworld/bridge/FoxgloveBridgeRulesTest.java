@@ -211,6 +211,52 @@ class FoxgloveBridgeRulesTest {
         }
     }
 
+    @Test
+    void aClientSubscribingWhileMessagesComeGetsEachOnceFromTheLatestOn() throws Exception {
+        // a subscription starts with the channel's latest message and then gets every later one: none lost, none
+        // twice, however a Subscribe and a publish of the world's tap interleave
+        Topic motor = Topics.module(new ModuleRef("Bot", "Motor", "MotorModule"));
+        try (FoxgloveBridge bridge = FoxgloveBridge.start(LAYOUT, FoxgloveBridge.Options.defaults().port(0)
+                .clientBacklog(1_000_000))) {
+            Texts texts = new Texts();
+            WebSocket socket = connect(bridge.uri(), texts, FoxgloveBridge.SUBPROTOCOL).get(30, TimeUnit.SECONDS);
+            texts.next(); // serverInfo
+            int channel = channelOf(texts.next(), "/Bot/Motor");
+            java.util.concurrent.atomic.AtomicBoolean publishing = new java.util.concurrent.atomic.AtomicBoolean(true);
+            Thread tap = new Thread(() -> {
+                for (long n = 1; publishing.get(); n++) {
+                    bridge.publish(new TelemetryMessage(motor, n, ("{\"n\":" + n + "}").getBytes()));
+                    if (n % 8 == 0) {
+                        java.util.concurrent.locks.LockSupport.parkNanos(1_000); // the client keeps up
+                    }
+                }
+            }, "publishing");
+            tap.start();
+            try {
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(3); // it took < 2 s to go wrong
+                for (int id = 1; System.nanoTime() < deadline; id++) {
+                    send(socket, "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":" + id + ",\"channelId\":"
+                            + channel + "}]}");
+                    List<Long> got = new java.util.ArrayList<>();
+                    while (got.size() < 3) {
+                        String message = texts.nextMessage();
+                        if (message.startsWith(id + ": ")) {
+                            got.add(JSON.readTree(message.substring(message.indexOf(' ') + 1)).get("n").asLong());
+                        }
+                    }
+                    assertEquals(List.of(got.get(0), got.get(0) + 1, got.get(0) + 2), got,
+                            "subscription " + id + ": from the latest on, each message once");
+                    send(socket, "{\"op\":\"unsubscribe\",\"subscriptionIds\":[" + id + "]}");
+                }
+            } finally {
+                publishing.set(false);
+                tap.join(10_000);
+            }
+            assertEquals(0, bridge.dropped(), "nothing dropped for a slow client: a gap would not be the race");
+            socket.abort();
+        }
+    }
+
     private static int channelOf(JsonNode advertise, String topic) {
         assertEquals("advertise", advertise.get("op").asText());
         for (JsonNode channel : advertise.get("channels")) {
