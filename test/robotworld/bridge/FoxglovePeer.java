@@ -27,10 +27,11 @@ final class FoxglovePeer implements AutoCloseable {
     private final Process process;
     private final List<JsonNode> events = new CopyOnWriteArrayList<>();
     private final StringBuilder errors = new StringBuilder();
+    private final Thread reader;
 
     private FoxglovePeer(Process process) {
         this.process = process;
-        Thread reader = new Thread(() -> {
+        reader = new Thread(() -> {
             try (BufferedReader lines = new BufferedReader(new InputStreamReader(process.getInputStream(),
                     StandardCharsets.UTF_8))) {
                 for (String line = lines.readLine(); line != null; line = lines.readLine()) {
@@ -95,6 +96,15 @@ final class FoxglovePeer implements AutoCloseable {
         }
         throw new AssertionError("the Foxglove client did not see " + what + " within 60 s: " + events + " "
                 + errors());
+    }
+
+    /** Waits (up to a minute) until the client ends, e.g. after a refused connection; its exit code. */
+    int awaitEnd() throws InterruptedException {
+        if (!process.waitFor(60, TimeUnit.SECONDS)) {
+            throw new AssertionError("the Foxglove client still runs after 60 s: " + events + " " + errors());
+        }
+        reader.join(10_000); // every event it printed is read
+        return process.exitValue();
     }
 
     String errors() {
