@@ -102,7 +102,7 @@ final class BridgeCommand implements Callable<Integer> {
                     out.println("warning: reachable from other hosts" + (token == null ? " without a token" : ""));
                 }
                 out.println("in Foxglove or Lichtblick: Open connection > Foxglove WebSocket > " + bridge.uri()
-                        + (seconds == null ? "; Ctrl-C to stop" : ""));
+                        + (seconds == null ? "   (Ctrl-C to stop)" : ""));
                 out.flush();
                 awaitStop();
             } catch (SpaceException e) {
