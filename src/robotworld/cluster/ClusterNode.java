@@ -200,22 +200,21 @@ final class ClusterNode {
      * that, on a computer with two cores, starts a new thread for every call.
      */
     Outcome call(String space, String container, ContainerCall call, long deadline, URI uri) {
-        IMap<String, ContainerRecord> map = containers(space);
-        Outcome outcome = retrying(() -> map.executeOnKey(container, call.lowWater(lowWater())), deadline, uri,
-                call.kind() + " on " + container);
+        // the map is looked up inside the retried call: on a member that is no longer active the lookup itself
+        // fails, and that must read as the member gone (its server's clients move on), not as an internal error
+        Outcome outcome = retrying(() -> containers(space).executeOnKey(container, call.lowWater(lowWater())),
+                deadline, uri, call.kind() + " on " + container);
         dispatch(space, container, outcome);
         return outcome;
     }
 
     /** Runs a naming call within {@code deadline}, repeating it as {@link #call} does. */
     NameRecord nameCall(String space, String name, NameCall call, long deadline, URI uri) {
-        IMap<String, NameRecord> map = names(space);
-        return retrying(() -> map.executeOnKey(name, call), deadline, uri, "naming '" + name + "'");
+        return retrying(() -> names(space).executeOnKey(name, call), deadline, uri, "naming '" + name + "'");
     }
 
     NameRecord lookupName(String space, String name, long deadline, URI uri) {
-        IMap<String, NameRecord> map = names(space);
-        return retrying(() -> map.get(name), deadline, uri, "lookup of '" + name + "'");
+        return retrying(() -> names(space).get(name), deadline, uri, "lookup of '" + name + "'");
     }
 
     /** How often a call was looked for in every container ({@link #findReceipt}): costly, rare when clients name containers. */
@@ -224,8 +223,7 @@ final class ClusterNode {
     /** The container of space {@code space} that knows client call {@code callId}, asking all of them; or null. */
     String findReceipt(String space, String callId, long deadline, URI uri) {
         receiptSearches.increment();
-        IMap<String, ContainerRecord> map = containers(space);
-        Map<String, Outcome> answers = retrying(() -> map.executeOnEntries(
+        Map<String, Outcome> answers = retrying(() -> containers(space).executeOnEntries(
                 ContainerCall.receipts(ContainerCall.Kind.FIND_RECEIPTS, null, List.of(callId))), deadline, uri,
                 "looking for call " + callId);
         for (Map.Entry<String, Outcome> answer : answers.entrySet()) {
@@ -237,17 +235,15 @@ final class ClusterNode {
     }
 
     void createRecord(String space, ContainerRecord record, long deadline, URI uri) {
-        IMap<String, ContainerRecord> map = containers(space);
         retrying(() -> {
-            map.set(record.id(), record);
+            containers(space).set(record.id(), record);
             return null;
         }, deadline, uri, "creating " + record.id());
     }
 
     void deleteRecord(String space, String id, long deadline, URI uri) {
-        IMap<String, ContainerRecord> map = containers(space);
         retrying(() -> {
-            map.delete(id);
+            containers(space).delete(id);
             return null;
         }, deadline, uri, "deleting " + id);
     }
