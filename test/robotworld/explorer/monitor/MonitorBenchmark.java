@@ -61,6 +61,10 @@ import robotworld.xvsm.XVSMX10ApplianceModuleRemote;
 public final class MonitorBenchmark {
 
     private static final int SECONDS = Integer.getInteger("bench.monitor.seconds", 20);
+    /** Extra options for the monitor's JVM, space-separated (e.g. a flight recording, to see where its time goes). */
+    private static final String CHILD_JVM_ARGS = System.getProperty("bench.monitor.childJvmArgs", "");
+    /** Which loads of the rendering cost to measure, comma-separated ({@code idle,demo,flat_out}); all by default. */
+    private static final String LOADS = System.getProperty("bench.monitor.loads", "");
     private static final int WARM_UP = 4;
 
     private MonitorBenchmark() {
@@ -137,6 +141,10 @@ public final class MonitorBenchmark {
         System.out.printf(Locale.ROOT, "  %-38s %10s %12s %14s %10s%n", "load", "calls/s", "CPU % core",
                 "answers seen", "paints/s");
         for (Load load : Load.values()) {
+            if (!LOADS.isBlank() && !List.of(LOADS.toLowerCase(Locale.ROOT).split(",")).contains(
+                    load.name().toLowerCase(Locale.ROOT))) {
+                continue;
+            }
             List<Double> cpu = new ArrayList<>();
             List<Double> rates = new ArrayList<>();
             List<Double> paints = new ArrayList<>();
@@ -186,10 +194,14 @@ public final class MonitorBenchmark {
                 public void off() {
                 }
             });
-            Process child = new ProcessBuilder(javaCommand(), "-Xmx512m", "-cp", System.getProperty("java.class.path"),
-                    "-Drwe.home=" + ProjectFiles.root(), MonitorBenchmark.class.getName(), "child",
-                    server.uri().toString(), world.toString(), Integer.toString(SECONDS))
-                    .redirectErrorStream(true).start();
+            List<String> command = new ArrayList<>(List.of(javaCommand(), "-Xmx512m"));
+            if (!CHILD_JVM_ARGS.isBlank()) {
+                command.addAll(List.of(CHILD_JVM_ARGS.trim().split("\\s+")));
+            }
+            command.addAll(List.of("-cp", System.getProperty("java.class.path"), "-Drwe.home=" + ProjectFiles.root(),
+                    MonitorBenchmark.class.getName(), "child", server.uri().toString(), world.toString(),
+                    Integer.toString(SECONDS)));
+            Process child = new ProcessBuilder(command).redirectErrorStream(true).start();
             BufferedReader lines = new BufferedReader(new InputStreamReader(child.getInputStream(),
                     StandardCharsets.UTF_8));
             String line;
