@@ -65,7 +65,11 @@ public final class MonitorBenchmark {
     private static final String CHILD_JVM_ARGS = System.getProperty("bench.monitor.childJvmArgs", "");
     /** Which loads of the rendering cost to measure, comma-separated ({@code idle,demo,flat_out}); all by default. */
     private static final String LOADS = System.getProperty("bench.monitor.loads", "");
-    private static final int WARM_UP = 4;
+    /**
+     * Seconds the window runs under its load before it is measured: the JIT compilers work for about half a minute
+     * after the window opens (half the process's CPU time at 4 s to 26 s), and the figure is about the steady state.
+     */
+    private static final int WARM_UP = Integer.getInteger("bench.monitor.warmupSeconds", 30);
 
     private MonitorBenchmark() {
     }
@@ -138,8 +142,8 @@ public final class MonitorBenchmark {
         Path world = ProjectFiles.resolve("docs/examples/chapter5-world.xml");
         System.out.printf(Locale.ROOT, "Rendering cost: the monitor window (1360 x 900) in its own JVM, %d s measured "
                 + "after %d s, %d rounds, medians%n", SECONDS, WARM_UP, rounds);
-        System.out.printf(Locale.ROOT, "  %-38s %10s %12s %14s %10s%n", "load", "calls/s", "CPU % core",
-                "answers seen", "paints/s");
+        System.out.printf(Locale.ROOT, "  %-38s %10s %12s %10s %14s %10s%n", "load", "calls/s", "CPU % core",
+                "JIT % core", "answers seen", "paints/s");
         for (Load load : Load.values()) {
             if (!LOADS.isBlank() && !List.of(LOADS.toLowerCase(Locale.ROOT).split(",")).contains(
                     load.name().toLowerCase(Locale.ROOT))) {
@@ -148,6 +152,7 @@ public final class MonitorBenchmark {
             List<Double> cpu = new ArrayList<>();
             List<Double> rates = new ArrayList<>();
             List<Double> paints = new ArrayList<>();
+            List<Double> jit = new ArrayList<>();
             long seen = 0;
             long made = 0;
             for (int round = 0; round < rounds; round++) {
@@ -157,9 +162,10 @@ public final class MonitorBenchmark {
                 seen += (long) result[2];
                 made += (long) result[3];
                 paints.add(result[4]);
+                jit.add(result[5]);
             }
-            System.out.printf(Locale.ROOT, "  %-38s %10.0f %12.1f %14s %10.1f%n", label(load), median(rates),
-                    median(cpu), seen + " of " + made, median(paints));
+            System.out.printf(Locale.ROOT, "  %-38s %10.0f %12.1f %10.1f %14s %10.1f%n", label(load), median(rates),
+                    median(cpu), median(jit), seen + " of " + made, median(paints));
         }
     }
 
@@ -171,7 +177,7 @@ public final class MonitorBenchmark {
         };
     }
 
-    /** {cpuPercent, callsPerSecond, answersSeen, answersMade, paintsPerSecond}. */
+    /** {cpuPercent, callsPerSecond, answersSeen, answersMade, paintsPerSecond, jitPercent}. */
     private static double[] renderingRound(Path world, Load load) throws Exception {
         try (SimulatedRobot robot = SimulatedRobot.create(SimRobotConfigReader.read(ProjectFiles.resolve(
                 "docs/examples/demo-robot.sim")).withTiming(LineTiming.FAST));
@@ -199,6 +205,7 @@ public final class MonitorBenchmark {
                 command.addAll(List.of(CHILD_JVM_ARGS.trim().split("\\s+")));
             }
             command.addAll(List.of("-cp", System.getProperty("java.class.path"), "-Drwe.home=" + ProjectFiles.root(),
+                    "-Dbench.monitor.warmupSeconds=" + WARM_UP,
                     MonitorBenchmark.class.getName(), "child", server.uri().toString(), world.toString(),
                     Integer.toString(SECONDS)));
             Process child = new ProcessBuilder(command).redirectErrorStream(true).start();
@@ -241,7 +248,8 @@ public final class MonitorBenchmark {
             double cpu = Double.parseDouble(parts[1]);
             long seen = Long.parseLong(parts[2]);
             double paints = Double.parseDouble(parts[3]);
-            return new double[] {cpu, calls.get() / Math.max(1, seconds - 2), seen, calls.get(), paints};
+            double jit = Double.parseDouble(parts[4]);
+            return new double[] {cpu, calls.get() / Math.max(1, seconds - 2), seen, calls.get(), paints, jit};
         }
     }
 
@@ -296,7 +304,10 @@ public final class MonitorBenchmark {
         return n % 2 == 1 ? sorted.get(n / 2) : (sorted.get(n / 2 - 1) + sorted.get(n / 2)) / 2;
     }
 
-    /** The monitor process: opens the window, says READY, measures, says RESULT cpuPercent answersSeen paints/s. */
+    /**
+     * The monitor process: opens the window, says READY, measures, says RESULT cpuPercent answersSeen paints/s
+     * jitPercent (the JIT compilers' share of the CPU percentage, from their compilation time).
+     */
     static final class Child {
         static void run(String url, Path worldFile, int seconds) throws Exception {
             MonitoredWorld world = MonitoredWorld.of(DescriptionLoader.loadWorld(worldFile));
@@ -328,18 +339,21 @@ public final class MonitorBenchmark {
                 System.out.flush();
                 var bean = (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
                 Thread.sleep(WARM_UP * 1000L);
+                var compilation = ManagementFactory.getCompilationMXBean();
+                long jitStart = compilation.getTotalCompilationTime();
                 long cpuStart = bean.getProcessCpuTime();
                 long wallStart = System.nanoTime();
                 long paintsStart = monitor[0].window().worldView().paints();
                 Thread.sleep(seconds * 1000L);
                 long cpu = bean.getProcessCpuTime() - cpuStart;
+                long jitMillis = compilation.getTotalCompilationTime() - jitStart;
                 long wall = System.nanoTime() - wallStart;
                 long paints = monitor[0].window().worldView().paints() - paintsStart;
                 System.out.println("STOP-LOAD");
                 System.out.flush();
                 Thread.sleep(2_000); // the last answers arrive
-                System.out.printf(Locale.ROOT, "RESULT %.2f %d %.2f%n", 100.0 * cpu / wall, answers.get(),
-                        paints / (wall / 1e9));
+                System.out.printf(Locale.ROOT, "RESULT %.2f %d %.2f %.2f%n", 100.0 * cpu / wall, answers.get(),
+                        paints / (wall / 1e9), 100.0 * jitMillis * 1e6 / wall);
                 System.out.flush();
                 SwingUtilities.invokeAndWait(() -> monitor[0].close());
             }
