@@ -6,8 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.net.ConnectException;
 import java.net.Inet4Address;
 import java.net.InetAddress;
@@ -23,8 +21,6 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -32,6 +28,7 @@ import org.junit.jupiter.api.io.TempDir;
 import robotworld.explorer.cli.Rwe;
 import robotworld.recording.SimWorld;
 import robotworld.space.server.SpaceServer;
+import robotworld.testsupport.RunningRwe;
 import robotworld.testsupport.ThreadsLeft;
 import robotworld.xvsm.XVSMMotorModuleRemote;
 
@@ -77,74 +74,6 @@ class BridgeCommandTest {
     @TempDir
     Path folder;
 
-    /** An {@code rwe} verb running on a thread of its own, as in a terminal; {@link #stop} is its Ctrl-C. */
-    private static final class Running implements AutoCloseable {
-        final StringWriter out = new StringWriter();
-        final StringWriter err = new StringWriter();
-        final AtomicInteger exit = new AtomicInteger(Integer.MIN_VALUE);
-        final AtomicReference<Throwable> failure = new AtomicReference<>();
-        final Thread thread;
-
-        Running(String... args) {
-            thread = new Thread(() -> {
-                try {
-                    exit.set(Rwe.run(new PrintWriter(out, true), new PrintWriter(err, true), args));
-                } catch (Throwable e) {
-                    failure.set(e);
-                }
-            }, "rwe " + args[0]);
-            thread.start();
-        }
-
-        /** The first group of {@code pattern} in the output, once it is there (within 30 s). */
-        String await(Pattern pattern) throws InterruptedException {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            while (true) {
-                Matcher matcher = pattern.matcher(out.toString());
-                if (matcher.find()) {
-                    return matcher.group(1);
-                }
-                assertTrue(thread.isAlive(), "ended (" + exit + ") before printing '" + pattern + "': " + this);
-                assertTrue(System.nanoTime() < deadline, "no '" + pattern + "' within 30 s: " + this);
-                Thread.sleep(10);
-            }
-        }
-
-        /** The endpoint's address, once it has said all it says when it starts. */
-        URI started() throws InterruptedException {
-            String ready = await(READY);
-            String endpoint = await(ENDPOINT);
-            assertEquals(endpoint, ready, this.toString());
-            return URI.create(endpoint);
-        }
-
-        /** Stops it as Ctrl-C does in-process (its thread is interrupted); its exit code, once it ended. */
-        int stop(long withinMillis) throws InterruptedException {
-            thread.interrupt();
-            thread.join(withinMillis);
-            assertFalse(thread.isAlive(), "still running " + withinMillis + " ms after Ctrl-C: " + this);
-            assertEquals(null, failure.get());
-            return exit.get();
-        }
-
-        @Override
-        public void close() {
-            if (thread.isAlive()) {
-                thread.interrupt();
-                try {
-                    thread.join(30_000);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            }
-        }
-
-        @Override
-        public String toString() {
-            return "\n--- out:\n" + out + "\n--- err:\n" + err;
-        }
-    }
-
     private Path world() throws IOException {
         return Files.writeString(folder.resolve("sim-world.xml"), WORLD);
     }
@@ -156,8 +85,8 @@ class BridgeCommandTest {
             motor.setMotor(1, 0); // the laptop's connection is up, its threads running
             Set<Thread> before = ThreadsLeft.now();
             URI uri;
-            try (Running bridge = new Running("bridge", world().toString(), "--space", world.url(), "--port", "0")) {
-                uri = bridge.started();
+            try (RunningRwe bridge = new RunningRwe("bridge", world().toString(), "--space", world.url(), "--port", "0")) {
+                uri = started(bridge);
                 assertEquals("127.0.0.1", uri.getHost(), "loopback by default" + bridge);
                 assertTrue(bridge.out.toString().contains("watching 3 modules in the space at " + world.url()),
                         bridge.toString());
@@ -235,9 +164,9 @@ class BridgeCommandTest {
     void withATokenFileOnlyAClientThatSendsItConnects() throws Exception {
         Path tokenFile = Files.writeString(folder.resolve("token"), "s3cret-tok3n\n");
         try (SpaceServer space = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200));
-             Running bridge = new Running("bridge", world().toString(), "--space", space.uri().toString(), "--port",
+             RunningRwe bridge = new RunningRwe("bridge", world().toString(), "--space", space.uri().toString(), "--port",
                      "0", "--token-file", tokenFile.toString())) {
-            URI uri = bridge.started();
+            URI uri = started(bridge);
             assertEquals("127.0.0.1", uri.getHost(), bridge.toString());
             assertTrue(bridge.out.toString().contains("(token required: add ?token=<token> to the URL)"),
                     bridge.toString());
@@ -282,16 +211,16 @@ class BridgeCommandTest {
         Path tokenFile = Files.writeString(folder.resolve("token"), "s3cret-tok3n\n");
         try (SpaceServer space = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200))) {
             String url = space.uri().toString();
-            try (Running open = new Running("bridge", world().toString(), "--space", url, "--port", "0", "--bind",
+            try (RunningRwe open = new RunningRwe("bridge", world().toString(), "--space", url, "--port", "0", "--bind",
                     "0.0.0.0", "--for", "30")) {
-                open.started();
+                started(open);
                 assertTrue(open.out.toString().contains("warning: reachable from other hosts without a token"),
                         open.toString());
                 assertEquals(0, open.stop(10_000), open.toString());
             }
-            try (Running open = new Running("bridge", world().toString(), "--space", url, "--port", "0", "--bind",
+            try (RunningRwe open = new RunningRwe("bridge", world().toString(), "--space", url, "--port", "0", "--bind",
                     "0.0.0.0", "--token-file", tokenFile.toString(), "--for", "30")) {
-                open.started();
+                started(open);
                 assertTrue(open.out.toString().contains("warning: reachable from other hosts\n"), open.toString());
                 assertEquals(0, open.stop(10_000), open.toString());
             }
@@ -302,7 +231,7 @@ class BridgeCommandTest {
     void mistakesGetAShortErrorNamingTheFix() throws Exception {
         String world = world().toString();
         // no space server there
-        Running unreachable = new Running("bridge", world, "--space", "http://127.0.0.1:9/space", "--port", "0");
+        RunningRwe unreachable = new RunningRwe("bridge", world, "--space", "http://127.0.0.1:9/space", "--port", "0");
         unreachable.thread.join(30_000);
         assertEquals(1, unreachable.exit.get(), unreachable.toString());
         assertShortWithoutTrace(unreachable);
@@ -312,7 +241,7 @@ class BridgeCommandTest {
 
         try (SpaceServer space = SpaceServer.start(SpaceServer.Options.defaults().port(0).stopGraceMillis(200));
              ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            Running busy = new Running("bridge", world, "--space", space.uri().toString(), "--port",
+            RunningRwe busy = new RunningRwe("bridge", world, "--space", space.uri().toString(), "--port",
                     String.valueOf(taken.getLocalPort()));
             busy.thread.join(30_000);
             assertEquals(1, busy.exit.get(), busy.toString());
@@ -324,13 +253,21 @@ class BridgeCommandTest {
             assertFalse(busy.out.toString().contains("Foxglove endpoint"), busy.toString());
         }
 
-        Running never = new Running("bridge", world, "--for", "0");
+        RunningRwe never = new RunningRwe("bridge", world, "--for", "0");
         never.thread.join(30_000);
         assertEquals(2, never.exit.get(), never.toString());
         assertTrue(never.err.toString().contains("--for must be positive"), never.toString());
     }
 
-    private static void assertShortWithoutTrace(Running command) {
+    /** The endpoint's address, once the bridge has said all it says when it starts. */
+    private static URI started(RunningRwe bridge) throws InterruptedException {
+        String ready = bridge.await(READY);
+        String endpoint = bridge.await(ENDPOINT);
+        assertEquals(endpoint, ready, bridge.toString());
+        return URI.create(endpoint);
+    }
+
+    private static void assertShortWithoutTrace(RunningRwe command) {
         String err = command.err.toString();
         assertTrue(err.startsWith("rwe bridge: "), command.toString());
         assertTrue(err.lines().count() <= 3, "at most three lines" + command);

@@ -21,8 +21,6 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import com.fasterxml.jackson.databind.JsonNode;
@@ -49,6 +47,7 @@ import robotworld.space.server.SpaceServer;
 import robotworld.telemetry.Schemas;
 import robotworld.telemetry.TrafficJson;
 import robotworld.testsupport.ProjectFiles;
+import robotworld.testsupport.RunningRwe;
 import robotworld.testsupport.ThreadsLeft;
 import robotworld.xvsm.CallTuple;
 
@@ -213,9 +212,9 @@ class RecordReplayCommandTest {
         Path file = folder.resolve("loop.mcap");
         recordMotorCalls(file);
         Set<Thread> before = ThreadsLeft.now();
-        Running replay = new Running("replay", file.toString(), "--loop", "--rate", "4", "--console",
+        RunningRwe replay = new RunningRwe("replay", file.toString(), "--loop", "--rate", "4", "--console",
                 "--foxglove-port", "-1");
-        Running watcher = null;
+        RunningRwe watcher = null;
         try {
             String space = replay.await("(?m)^replay space at (http://\\S+)$");
             assertFalse(ThreadsLeft.since(before, name -> name.startsWith("space-server")).isEmpty(),
@@ -240,8 +239,8 @@ class RecordReplayCommandTest {
                     .matcher(replay.out.toString());
             assertTrue(watch.find(), replay.toString());
             assertEquals(space, watch.group(2));
-            watcher = new Running("monitor", watch.group(1), "--space", space, "--console");
-            Running late = watcher;
+            watcher = new RunningRwe("monitor", watch.group(1), "--space", space, "--console");
+            RunningRwe late = watcher;
             late.awaitTrue(() -> live(late).size() >= 2 * LOOPED.size(), "the watcher seeing two passes");
             assertTrue(late.out.toString().startsWith("# REPLAY of loop.mcap (recorded "), late.toString());
             List<String> watched = live(late);
@@ -277,7 +276,7 @@ class RecordReplayCommandTest {
     }
 
     /** The motor answers a console monitor printed as they came (not those it found there when it started). */
-    private static List<String> live(Running monitor) {
+    private static List<String> live(RunningRwe monitor) {
         return answers(monitor.out.toString().lines().filter(line -> !line.startsWith("earlier"))
                 .collect(java.util.stream.Collectors.joining("\n")), "Motor-Controller");
     }
@@ -314,74 +313,6 @@ class RecordReplayCommandTest {
                 recorder.observer().answerSeen(new AnswerSeen(motor, call, asked.plusMillis(10), false,
                         Duration.ofMillis(10), 0));
             }
-        }
-    }
-
-    /** An {@code rwe} verb running on a thread of its own, as in a terminal; {@link #stop} is its Ctrl-C. */
-    private static final class Running implements AutoCloseable {
-        final StringWriter out = new StringWriter();
-        final StringWriter err = new StringWriter();
-        final AtomicInteger exit = new AtomicInteger(Integer.MIN_VALUE);
-        final AtomicReference<Throwable> failure = new AtomicReference<>();
-        final Thread thread;
-
-        Running(String... args) {
-            thread = new Thread(() -> {
-                try {
-                    exit.set(Rwe.run(new PrintWriter(out, true), new PrintWriter(err, true), args));
-                } catch (Throwable e) {
-                    failure.set(e);
-                }
-            }, "rwe " + args[0]);
-            thread.start();
-        }
-
-        /** The first group of {@code pattern} in the output, once it is there (within 30 s). */
-        String await(String pattern) throws InterruptedException {
-            Pattern wanted = Pattern.compile(pattern);
-            String[] found = new String[1];
-            awaitTrue(() -> {
-                Matcher matcher = wanted.matcher(out.toString());
-                found[0] = matcher.find() ? matcher.group(1) : null;
-                return found[0] != null;
-            }, "'" + pattern + "'");
-            return found[0];
-        }
-
-        /** Waits (up to 30 s) until {@code condition} holds, while the command runs. */
-        void awaitTrue(java.util.function.BooleanSupplier condition, String what) throws InterruptedException {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            while (!condition.getAsBoolean()) {
-                assertTrue(thread.isAlive(), "ended (" + exit + ") before " + what + ": " + this);
-                assertTrue(System.nanoTime() < deadline, "not " + what + " within 30 s: " + this);
-                Thread.sleep(20);
-            }
-        }
-
-        /** Stops it as Ctrl-C does in-process (its thread is interrupted); its exit code, once it ended. */
-        int stop(long withinMillis) throws InterruptedException {
-            thread.interrupt();
-            thread.join(withinMillis);
-            assertFalse(thread.isAlive(), "still running " + withinMillis + " ms after Ctrl-C: " + this);
-            assertEquals(null, failure.get());
-            return exit.get();
-        }
-
-        @Override
-        public void close() {
-            if (thread.isAlive()) {
-                thread.interrupt();
-                try {
-                    thread.join(30_000);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            }
-        }
-
-        @Override
-        public String toString() {
-            return "\n--- out:\n" + out + "\n--- err:\n" + err;
         }
     }
 
