@@ -502,12 +502,14 @@ public final class FoxgloveBridge implements AutoCloseable {
                 // meanwhile is delivered after it (deliver waits for the lock), and only if it is newer
                 synchronized (this) {
                     Published last;
+                    boolean known;
                     synchronized (FoxgloveBridge.this) {
-                        if (!channels.containsKey(channel)) {
-                            sendText(status(2, "no channel " + channel));
-                            continue;
-                        }
+                        known = channels.containsKey(channel);
                         last = latest.get(channel);
+                    }
+                    if (!known) { // sent outside the bridge's lock, which every publication takes
+                        sendText(status(2, "no channel " + channel));
+                        continue;
                     }
                     if (id < 0 || subscriptions.containsValue(id)) {
                         sendText(status(2, "subscription id " + id + " is invalid or in use"));

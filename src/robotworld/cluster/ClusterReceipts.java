@@ -42,10 +42,7 @@ final class ClusterReceipts implements CallReceipts {
 
     /** A call of a client ran through this member on {@code container}; {@code removal}: it holds entries. */
     void made(String call, String container, boolean removal) {
-        if (containerOf.size() >= MAX_KNOWN) {
-            containerOf.clear(); // forgotten ones are found again by asking the containers
-        }
-        containerOf.put(call, container);
+        remember(call, container);
         if (removal) {
             held.add(call);
         }
@@ -57,10 +54,16 @@ final class ClusterReceipts implements CallReceipts {
      */
     @Override
     public void hint(String callId, String containerId) {
-        if (containerOf.size() >= MAX_KNOWN) {
-            containerOf.clear();
+        if (!containerOf.containsKey(callId)) { // what this member saw itself beats what a client says
+            remember(callId, containerId);
         }
-        containerOf.putIfAbsent(callId, containerId);
+    }
+
+    private void remember(String callId, String container) {
+        if (containerOf.size() >= MAX_KNOWN) {
+            containerOf.clear(); // forgotten ones are found again by asking the containers
+        }
+        containerOf.put(callId, container);
     }
 
     /** The container holds the removal since the call itself. */
@@ -164,7 +167,7 @@ final class ClusterReceipts implements CallReceipts {
         try {
             String found = space.findReceipt(callId);
             if (found != null) {
-                containerOf.put(callId, found); // a cancel asks up to three times: look once
+                remember(callId, found); // a cancel asks up to three times: look once
             }
             return found;
         } catch (SpaceException e) {

@@ -637,19 +637,19 @@ public final class SafetySupervisor implements AutoCloseable {
             if (!guard.mayRetryStop()) {
                 return true;
             }
-            spaceLost(sinceContact, always);
+            sayLostOnce(sinceContact, always);
             guard.stop(StopCause.SPACE_LOST, reason, null, null, always);
             return true;
         }
         if (always && !guard.isHeld()) {
-            spaceLost(sinceContact, true);
+            sayLostOnce(sinceContact, true);
             guard.hold(new StopRecord(Instant.now(), guard.participant(), guard.module(), StopCause.SPACE_LOST,
                     reason, "held in its safe state", ownId, null, null));
         }
         return always;
     }
 
-    private void spaceLost(long sinceContact, boolean holding) {
+    private void sayLostOnce(long sinceContact, boolean holding) {
         if (!spaceLost) {
             spaceLost = true;
             LOG.warn("{} cannot reach its space {}: no contact for {} ms; {}", ownId, space.spaceUri(),

@@ -16,12 +16,10 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import robotworld.core.BumperModule;
 import robotworld.core.MotorModule;
 import robotworld.space.EmbeddedSpace;
 import robotworld.space.remote.RemoteSpace;
 import robotworld.space.server.SpaceServer;
-import robotworld.xvsm.XVSMBumperModuleLocal;
 import robotworld.xvsm.XVSMMotorModuleLocal;
 import robotworld.xvsm.XVSMRuntime;
 
@@ -126,17 +124,7 @@ class HeartbeatLivenessTest {
     }
 
     private static void serve(XVSMRuntime runtime, String participant) {
-        runtime.own(new XVSMBumperModuleLocal(runtime, participant, "Bumper", new BumperModule() {
-            @Override
-            public int getAllBumper() {
-                return 0;
-            }
-
-            @Override
-            public boolean getSingleBumper(int bumperNumber) {
-                return false;
-            }
-        }));
+        ServingChild.serveIdleBumper(runtime, participant, "Bumper");
     }
 
     private static void serveFan(XVSMRuntime runtime) {

@@ -15,20 +15,25 @@ public final class ServingChild {
 
     public static void main(String[] args) throws Exception {
         try (XVSMRuntime runtime = XVSMRuntime.connect(args[0], args[1])) {
-            runtime.own(new XVSMBumperModuleLocal(runtime, args[2], args[3], new BumperModule() {
-                @Override
-                public int getAllBumper() {
-                    return 0;
-                }
-
-                @Override
-                public boolean getSingleBumper(int bumperNumber) {
-                    return false;
-                }
-            }));
+            serveIdleBumper(runtime, args[2], args[3]);
             System.out.println("READY " + runtime.programId());
             System.out.flush();
             runtime.serveUntilStopped();
         }
+    }
+
+    /** Serves a bumper module that never touches anything: a program with a module and nothing to do. */
+    static void serveIdleBumper(XVSMRuntime runtime, String participant, String module) {
+        runtime.own(new XVSMBumperModuleLocal(runtime, participant, module, new BumperModule() {
+            @Override
+            public int getAllBumper() {
+                return 0;
+            }
+
+            @Override
+            public boolean getSingleBumper(int bumperNumber) {
+                return false;
+            }
+        }));
     }
 }

@@ -40,6 +40,7 @@ import robotworld.space.Subscription;
 import robotworld.space.SubscriptionEnd;
 import robotworld.space.Timeout;
 import robotworld.space.wire.CrefMapping;
+import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireContext;
 import robotworld.space.wire.WireError;
 import robotworld.space.wire.WireFormatException;
@@ -511,18 +512,8 @@ public final class RemoteSpace implements Capi, AsyncTakes {
      * container of a clustered space; the plain id where there is no container or its id is not wire-safe.
      */
     static String settleRef(String callId, ContainerRef container) {
-        if (container == null || callId.length() + 1 + container.id().length() > 128) {
-            return callId;
-        }
-        String id = container.id();
-        for (int i = 0; i < id.length(); i++) {
-            char c = id.charAt(i);
-            if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_'
-                    || c == '.' || c == ':')) {
-                return callId;
-            }
-        }
-        return callId + "/" + id;
+        return container == null || !Wire.isId(container.id()) ? callId
+                : callId + "/" + container.id();
     }
 
     // ---- notifications ----
@@ -546,7 +537,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     Answer subscribeOnServer(String session, RemoteSubscription subscription, Timeout timeout) {
         return call("subscribe", null, Retry.IDEMPOTENT, (out, id, wait) -> out.field("session", session)
                 .cref("container", subscription.container).operations(subscription.operations)
-                .field("mode", robotworld.space.wire.Wire.name(subscription.mode)).field("timeout", timeout.millis()));
+                .field("mode", Wire.name(subscription.mode)).field("timeout", timeout.millis()));
     }
 
     private void cancelOnServer(RemoteSubscription subscription) {
@@ -965,7 +956,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
     private static String headers(Endpoint to, String ackHeader) {
         return ackHeader == null ? to.authorization()
-                : to.authorization() + robotworld.space.wire.Wire.ACK_HEADER + ": " + ackHeader + "\r\n";
+                : to.authorization() + Wire.ACK_HEADER + ": " + ackHeader + "\r\n";
     }
 
     private byte[] encode(Body body, String callId, Timeout wait) {

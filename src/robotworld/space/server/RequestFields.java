@@ -10,6 +10,7 @@ import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
 import robotworld.space.Selector;
 import robotworld.space.Timeout;
+import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireFormatException;
 import robotworld.space.wire.WireReader;
 
@@ -18,9 +19,6 @@ import robotworld.space.wire.WireReader;
  * with a clear message when one is missing. Unknown fields are rejected.
  */
 final class RequestFields {
-
-    /** Longest call, session or subscription id accepted. */
-    static final int MAX_ID_CHARS = 128;
 
     ContainerRef container;
     Timeout timeout;
@@ -106,16 +104,11 @@ final class RequestFields {
     }
 
     static String id(String value, String what) {
-        if (value.isEmpty() || value.length() > MAX_ID_CHARS) {
-            throw new WireFormatException(what + " id must have 1.." + MAX_ID_CHARS + " characters");
+        if (value.isEmpty() || value.length() > Wire.MAX_ID_CHARS) {
+            throw new WireFormatException(what + " id must have 1.." + Wire.MAX_ID_CHARS + " characters");
         }
-        for (int i = 0; i < value.length(); i++) {
-            char c = value.charAt(i);
-            boolean ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')
-                    || c == '-' || c == '_' || c == '.' || c == ':';
-            if (!ok) {
-                throw new WireFormatException(what + " id may hold only letters, digits, '-', '_', '.', ':'");
-            }
+        if (!Wire.isId(value)) {
+            throw new WireFormatException(what + " id may hold only letters, digits, '-', '_', '.', ':'");
         }
         return value;
     }

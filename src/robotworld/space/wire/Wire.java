@@ -49,6 +49,27 @@ public final class Wire {
                 .disable(JsonParser.Feature.AUTO_CLOSE_SOURCE);
     }
 
+    /** The longest id (call, session, subscription) the wire carries. */
+    public static final int MAX_ID_CHARS = 128;
+
+    /**
+     * Whether {@code text} is a valid id on the wire: 1 to {@value #MAX_ID_CHARS} letters, digits, {@code - _ . :}
+     * (so that ids travel in headers and call references unquoted).
+     */
+    public static boolean isId(String text) {
+        if (text.isEmpty() || text.length() > MAX_ID_CHARS) {
+            return false;
+        }
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_'
+                    || c == '.' || c == ':')) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** The wire name of an enum value: lower case, underscores as dashes. */
     public static String name(Enum<?> value) {
         return value.name().toLowerCase(Locale.ROOT).replace('_', '-');
