@@ -1,6 +1,7 @@
 package robotworld.cluster;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.net.URI;
@@ -115,6 +116,34 @@ class ClientFailoverTest {
         writer.shift(answers, Timeout.TRY_ONCE, List.of(robotworld.space.Item.keyed("host-a", Entry.of("done"))));
         assertEquals(List.of(Entry.of("done")), take.get(SOON.toMillis(), TimeUnit.MILLISECONDS));
         assertEquals(0, writer.describeContainer(answers).size(), "taken once");
+    }
+
+    /** Clients stay spread over the servers: one that moved on goes back to its first server once it serves. */
+    @Test
+    void aClientGoesBackToItsFirstServerOnceItServesAgain() throws Exception {
+        RemoteSpace client = client(0);
+        URI home = servers.get(0).uri();
+        ContainerRef queue = client.createContainer(ContainerSpec.of(Order.FIFO).named("queue"));
+        kill(0);
+        long killed = System.nanoTime();
+        client.write(queue, Timeout.TRY_ONCE, Entry.of(1L));
+        assertNotEquals(home, client.url(), "moved on from the dead server");
+
+        cluster.members.remove(0); // gone for good: the new member joins with the two others
+        ClusterMember restarted = cluster.addMember();
+        servers.set(0, SpaceServer.start(restarted.openSpace("failover"), SpaceServer.Options.defaults()
+                .port(home.getPort()).stopGraceMillis(100)));
+        long deadline = System.nanoTime() + SOON.toNanos();
+        while (!client.url().equals(home)) {
+            assertTrue(System.nanoTime() - deadline < 0, "still on " + client.url() + " after " + SOON);
+            Thread.sleep(50);
+        }
+        long back = System.nanoTime() - killed;
+        assertTrue(back >= TimeUnit.SECONDS.toNanos(10), "not back before the dead server's failure was 10 s old"
+                + " (a failed server is passed over that long): " + back / 1_000_000 + " ms");
+        client.write(queue, Timeout.TRY_ONCE, Entry.of(2L));
+        assertEquals(List.of(1L, 2L), values(client.read(queue, Timeout.TRY_ONCE, Selector.fifo(Selector.ALL))),
+                "served by its first server again, with what the others stored meanwhile");
     }
 
     @Test

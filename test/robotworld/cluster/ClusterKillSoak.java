@@ -26,6 +26,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -52,8 +53,8 @@ import robotworld.xvsm.XVSMRuntime;
 
 /**
  * Kill -9 soak of a 3-member clustered space ({@code ./antw bench-cluster-kill}): three {@code rwe space --cluster}
- * processes; {@code bench.hosts} (20) computers with {@code bench.threads} (4) threads each make module calls
- * ({@code getSingleSensor} of {@code bench.modules} IR modules whose answers name module and sensor), each computer
+ * processes; {@code bench.hosts} (20) computers with {@code bench.threads} (4) threads each make a module call
+ * every {@code bench.callPeriodMillis} (1 000; 0 = as fast as answers come) ({@code getSingleSensor} of {@code bench.modules} IR modules whose answers name module and sensor), each computer
  * a runtime whose client knows all three servers, starting with a different one; writers and takers pass numbered
  * entries through a queue; monitors are subscribed to every operation on that queue. Then {@code bench.kills} (10)
  * times: {@code kill -9} of one member (in turn), calls go on, the member is started again on its ports.
@@ -75,6 +76,15 @@ public final class ClusterKillSoak {
     private static final Duration CALL_TIMEOUT = Duration.ofSeconds(Integer.getInteger("bench.callTimeoutSeconds", 5));
     private static final long ALLOWANCE_MILLIS = RemoteSpace.Options.defaults().networkAllowanceMillis();
     private static final long SETTLE_MILLIS = Long.getLong("bench.settleMillis", 6_000);
+    /** How long each writer sleeps after each write. */
+    private static final long WRITE_PERIOD_MILLIS = Long.getLong("bench.writePeriodMillis", 50);
+    /**
+     * How long after a member is started again the next kill waits: its partitions move back to it, its JIT warms
+     * up, and the clients that list it first go back to it (once its failure is 10 s old).
+     */
+    private static final long REJOIN_MILLIS = Long.getLong("bench.rejoinMillis", 12_000);
+    /** How often each caller thread starts a call (0: as fast as the answers come, which overloads this machine). */
+    private static final long CALL_PERIOD_MILLIS = Long.getLong("bench.callPeriodMillis", 1_000);
     private static final Pattern URL = Pattern.compile("listening on (http://\\S+)");
     private static final Pattern MEMBER = Pattern.compile("cluster member of '[^']+' at (\\S+),");
 
@@ -315,7 +325,7 @@ public final class ClusterKillSoak {
                 others.add(dead.address);
                 members.set(victim, restartMember(victim, port(URI.create(dead.url).getAuthority()),
                         port(dead.address), others));
-                Thread.sleep(SETTLE_MILLIS); // partitions move back to it
+                Thread.sleep(REJOIN_MILLIS);
             }
             running.set(false);
             for (java.util.concurrent.Future<?> done : writersDone) {
@@ -385,7 +395,17 @@ public final class ClusterKillSoak {
     }
 
     private static void callModules(List<XVSMIRDistanceModuleRemote> modules, ConcurrentLinkedQueue<Long> times) {
+        long period = TimeUnit.MILLISECONDS.toNanos(CALL_PERIOD_MILLIS);
+        // threads start at random points of the period, as independent control loops would
+        long next = System.nanoTime() + (period == 0 ? 0 : ThreadLocalRandom.current().nextLong(period));
         while (running.get()) {
+            long early = next - System.nanoTime();
+            if (early > 0) {
+                LockSupport.parkNanos(early);
+                continue;
+            }
+            // a late call starts at once; the loop does not catch up with a burst
+            next = Math.max(next + period, System.nanoTime());
             int module = ThreadLocalRandom.current().nextInt(modules.size());
             int sensor = 1 + ThreadLocalRandom.current().nextInt(IRDistanceModule.SENSORS);
             long started = System.nanoTime();
@@ -486,7 +506,7 @@ public final class ClusterKillSoak {
             } catch (SpaceException e) {
                 // outcome unknown: not counted as acknowledged (it may still be there)
             }
-            sleep(10);
+            sleep(WRITE_PERIOD_MILLIS);
         }
     }
 

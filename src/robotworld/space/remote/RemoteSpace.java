@@ -85,6 +85,10 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
     private static final int BACKOFF_FIRST_MILLIS = 5;
     private static final int BACKOFF_MAX_MILLIS = 250;
+    /** How often a client that left the first server of its list checks whether it can go back. */
+    static final long HOME_CHECK_MILLIS = 2_000;
+    /** The name a home check looks up: any name will do, found or not. */
+    private static final String HOME_CHECK_NAME = "rwe-home-check";
 
     /** The servers of the space, in the order given; calls go to the current one and fail over to the next. */
     private final List<Endpoint> endpoints;
@@ -104,8 +108,10 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     /** Waiting calls in progress, by call id, so that close() can cancel them on the server. */
     /** Calls that wait on the server, as settle references ({@link #settleRef}), for close() to cancel. */
     private final Map<String, Boolean> waitingCalls = new ConcurrentHashMap<>();
-    /** Pools of servers this client failed over from: closed with the client (their calls may still use them). */
-    private final List<ConnectionPool> retired = new java.util.concurrent.CopyOnWriteArrayList<>();
+    /** A pool per server, in the order of {@link #endpoints}; calls in progress on a server left keep its pool. */
+    private final List<ConnectionPool> pools;
+    /** Whether a check that the first server answers again is under way. */
+    private final java.util.concurrent.atomic.AtomicBoolean checkingHome = new java.util.concurrent.atomic.AtomicBoolean();
     private static final System.Logger LOG = System.getLogger(RemoteSpace.class.getName());
     /** Takes that wait without a thread; created when first used. */
     private AsyncCalls asyncCalls;
@@ -127,7 +133,12 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         this.options = options;
         this.wire = WireContext.of(new WireLimits(Integer.MAX_VALUE - 64, 256, Integer.MAX_VALUE - 64,
                 Integer.MAX_VALUE, 1024, Integer.MAX_VALUE), CrefMapping.IDENTITY);
-        this.pool = new ConnectionPool(endpoint, options.connectTimeoutMillis(), options.maxIdleConnections());
+        List<ConnectionPool> perServer = new ArrayList<>();
+        for (Endpoint server : endpoints) {
+            perServer.add(new ConnectionPool(server, options.connectTimeoutMillis(), options.maxIdleConnections()));
+        }
+        this.pools = List.copyOf(perServer);
+        this.pool = pools.get(0);
         this.timer = Executors.newSingleThreadScheduledExecutor(daemonThreads("space-client-timer"));
         this.delivery = Executors.newCachedThreadPool(daemonThreads("space-client-notify"));
         this.acks = new AckQueue(timer, options.ackDelayMicros(), this::sendAcks);
@@ -167,6 +178,10 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             space.close();
             throw e;
         }
+        if (urls.size() > 1) {
+            space.timer.scheduleWithFixedDelay(space::checkHome, HOME_CHECK_MILLIS, HOME_CHECK_MILLIS,
+                    TimeUnit.MILLISECONDS);
+        }
         return space;
     }
 
@@ -203,10 +218,10 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             if (endpoint != failed) {
                 return; // moved on already
             }
-            endpoint = endpoints.get(rotation.failed(System.nanoTime(), couldNotBeReached));
+            int next = rotation.failed(System.nanoTime(), couldNotBeReached);
+            endpoint = endpoints.get(next);
             old = pool;
-            pool = new ConnectionPool(endpoint, options.connectTimeoutMillis(), options.maxIdleConnections());
-            retired.add(old);
+            pool = pools.get(next);
             if (asyncCalls != null) {
                 asyncCalls.endpointChanged();
             }
@@ -215,6 +230,84 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         LOG.log(System.Logger.Level.INFO, "space server " + failed.url() + (couldNotBeReached ? " does not answer ("
                 : " cannot serve (") + (why instanceof Throwable t && t.getMessage() != null ? t.getMessage() : why)
                 + "); going on with " + endpoint.url());
+    }
+
+    /**
+     * A client that moved on from the first server of its list goes back to it once it serves again, so that
+     * clients stay spread over the servers as their lists say (each list starting with a different server) instead
+     * of piling up on the ones that never failed. Checked every {@link #HOME_CHECK_MILLIS}, once the first server's
+     * failure is {@link ServerRotation#SUSPECT_NANOS} old, with a call that needs the space behind the server (a
+     * cluster member that has not yet joined its cluster does not count); on a pool thread, since a silent server
+     * costs a connect timeout. Calls in progress finish where they are.
+     */
+    private void checkHome() {
+        Endpoint home = endpoints.get(0);
+        synchronized (this) {
+            if (closed || endpoint == home || !rotation.mayGoHome(System.nanoTime())) {
+                return;
+            }
+        }
+        if (!checkingHome.compareAndSet(false, true)) {
+            return;
+        }
+        try {
+            delivery.execute(() -> {
+                try {
+                    if (servesAgain(home)) {
+                        goHome(home);
+                    } else {
+                        synchronized (this) {
+                            rotation.homeFailed(System.nanoTime());
+                        }
+                    }
+                } finally {
+                    checkingHome.set(false);
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException closedMeanwhile) {
+            checkingHome.set(false);
+        }
+    }
+
+    /** Whether {@code server} answers a name lookup (found or not) within the network allowance. */
+    private boolean servesAgain(Endpoint server) {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis());
+        byte[] request = encode((out, id, wait) -> out.field("name", HOME_CHECK_NAME), null, Timeout.TRY_ONCE);
+        HttpConnection connection = null;
+        try {
+            connection = new HttpConnection(server.host(), server.port(), pool.connectTimeout(deadline));
+            connection.send("POST", server.path("lookup"), headers(server, null), request, request.length);
+            HttpConnection.Response response = connection.receive(deadline, () -> { });
+            if (response.status() == 200) {
+                return true;
+            }
+            Answer answer = parseAnswer(response);
+            return answer.error != null && WireError.byKind(answer.error) == WireError.CONTAINER_NOT_FOUND;
+        } catch (IOException | SpaceException e) {
+            return false;
+        } finally {
+            if (connection != null) {
+                connection.close();
+            }
+        }
+    }
+
+    private void goHome(Endpoint home) {
+        Endpoint left;
+        synchronized (this) {
+            if (closed || endpoint == home) {
+                return;
+            }
+            left = endpoint;
+            endpoint = home;
+            pool = pools.get(rotation.wentHome());
+            if (asyncCalls != null) {
+                asyncCalls.endpointChanged();
+            }
+        }
+        pools.get(endpoints.indexOf(left)).discardIdle();
+        LOG.log(System.Logger.Level.INFO, "space server " + home.url() + " serves again; going back to it from "
+                + left.url());
     }
 
     @Override
@@ -565,8 +658,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             return;
         }
         closed = true;
-        pool.close(); // breaks the waits of calls in progress: they throw SpaceClosedException
-        retired.forEach(ConnectionPool::close);
+        pools.forEach(ConnectionPool::close); // breaks the waits of calls in progress: SpaceClosedException
         synchronized (this) {
             if (asyncCalls != null) {
                 asyncCalls.close(); // takes waiting without a thread end with SpaceClosedException
@@ -830,7 +922,8 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     private Answer cancelUntil(String callId, long deadline) {
         int attempt = 0;
         while (System.nanoTime() - deadline < 0) {
-            Answer outcome = exchangeQuietly("cancel", null, callId, deadline);
+            // the call's own bound: no grace past it (a lost answer is then reported as unknown)
+            Answer outcome = exchangeQuietly("cancel", null, callId, deadline, false);
             if (outcome != null) {
                 return outcome;
             }
@@ -841,19 +934,28 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
     /** One exchange without retries, for acks and cancels (also after close): the answer, or null on failure. */
     private Answer exchangeQuietly(String operation, String ackHeader, String callId, long deadline) {
+        return exchangeQuietly(operation, ackHeader, callId, deadline, true);
+    }
+
+    /** As above; {@code grace}: the answer may come up to 100 ms past the deadline (clean-ups, not calls). */
+    private Answer exchangeQuietly(String operation, String ackHeader, String callId, long deadline, boolean grace) {
         byte[] request = callId == null ? "{}".getBytes(java.nio.charset.StandardCharsets.US_ASCII)
                 : encode((out, id, wait) -> out.field("call", callId), null, Timeout.TRY_ONCE);
-        return postQuietly(operation, request, ackHeader, deadline);
+        return postQuietly(operation, request, ackHeader, deadline, grace);
     }
 
     private Answer postQuietly(String operation, byte[] request, String ackHeader, long deadline) {
+        return postQuietly(operation, request, ackHeader, deadline, true);
+    }
+
+    private Answer postQuietly(String operation, byte[] request, String ackHeader, long deadline, boolean grace) {
         HttpConnection connection = null;
         Endpoint used = endpoint;
         try {
             connection = new HttpConnection(used.host(), used.port(), pool.connectTimeout(deadline));
             connection.send("POST", used.path(operation), headers(used, ackHeader), request, request.length);
-            HttpConnection.Response response = connection.receive(Math.max(deadline,
-                    System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(100)), () -> { });
+            HttpConnection.Response response = connection.receive(grace ? Math.max(deadline,
+                    System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(100)) : deadline, () -> { });
             if (response.status() != 200) {
                 return null;
             }

@@ -44,6 +44,26 @@ final class ServerRotation {
         return current;
     }
 
+    /**
+     * Whether a client that moved on from the first server may check if it can go back to it: not while that
+     * server's failure is recent.
+     */
+    boolean mayGoHome(long now) {
+        return current != 0 && (lastFailed[0] == 0 || now - lastFailed[0] > SUSPECT_NANOS);
+    }
+
+    /** The first server did not serve when checked at {@code now}: it is passed over for a while again. */
+    void homeFailed(long now) {
+        lastFailed[0] = now == 0 ? 1 : now;
+        unreachable[0] = true;
+    }
+
+    /** Calls go to the first server again; returns its index. */
+    int wentHome() {
+        current = 0;
+        return current;
+    }
+
     private int next(long now) {
         int best = -1;
         for (int step = 1; step < lastFailed.length; step++) {

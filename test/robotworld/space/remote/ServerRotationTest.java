@@ -1,6 +1,8 @@
 package robotworld.space.remote;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -63,5 +65,30 @@ class ServerRotationTest {
     void withOneServerThereIsNowhereElse() {
         ServerRotation rotation = new ServerRotation(1);
         assertEquals(0, rotation.failed(SECOND, DOWN));
+    }
+
+    @Test
+    void aClientGoesHomeOnlyAfterTheFirstServersFailureIsOld() {
+        ServerRotation rotation = new ServerRotation(3);
+        assertFalse(rotation.mayGoHome(SECOND), "at home already");
+        long t = 5 * SECOND;
+        assertEquals(1, rotation.failed(t, DOWN));
+        assertFalse(rotation.mayGoHome(t + SUSPECT / 2), "its failure is recent");
+        assertTrue(rotation.mayGoHome(t + SUSPECT + 1));
+        rotation.homeFailed(t + SUSPECT + 1); // checked: still not serving
+        assertFalse(rotation.mayGoHome(t + SUSPECT + 2), "passed over again after a failed check");
+        assertTrue(rotation.mayGoHome(t + 2 * SUSPECT + 2));
+        assertEquals(0, rotation.wentHome());
+        assertEquals(0, rotation.current());
+        assertFalse(rotation.mayGoHome(t + 3 * SUSPECT));
+    }
+
+    @Test
+    void aClientThatStartedElsewhereMayGoHomeAtOnce() {
+        ServerRotation rotation = new ServerRotation(2);
+        assertEquals(1, rotation.failed(SECOND, ANSWERED));
+        // the first server answered but could not serve; it had failed, so it waits like any other
+        assertFalse(rotation.mayGoHome(SECOND + 1));
+        assertTrue(rotation.mayGoHome(SECOND + SUSPECT + 1));
     }
 }
