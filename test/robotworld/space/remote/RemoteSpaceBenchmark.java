@@ -127,7 +127,12 @@ public final class RemoteSpaceBenchmark {
             concurrentPairs(uri, redis, 1);
         } else {
             // as Redis is: its own process, so its heap and collector are not the 100 clients' ones
-            try (SpaceServerProcess own = SpaceServerProcess.start(List.of("-Xmx1g"))) {
+            List<String> jvm = new ArrayList<>(List.of("-Xmx1g"));
+            String extra = System.getProperty("bench.pairsServerJvmArgs", ""); // e.g. a flight recording
+            if (!extra.isBlank()) {
+                jvm.addAll(List.of(extra.trim().split("\\s+")));
+            }
+            try (SpaceServerProcess own = SpaceServerProcess.start(jvm)) {
                 System.out.printf("%nspace server for the pairs: its own process (rwe space, -Xmx1g), as"
                         + " Redis is; three warm-up runs, since its JIT starts cold%n");
                 concurrentPairs(own.uri(), redis, 3);
