@@ -253,10 +253,10 @@ final class ReplayCommand implements Callable<Integer> {
             return null;
         }
         Path folder = Files.createTempDirectory("rwe-replay");
+        folder.toFile().deleteOnExit(); // files are deleted at exit in reverse order: the file, then its folder
         Path written = folder.resolve(replayer.layout().world() + ".xml");
-        Files.write(written, xml);
         written.toFile().deleteOnExit();
-        folder.toFile().deleteOnExit();
+        Files.write(written, xml);
         return written;
     }
 }
