@@ -94,6 +94,14 @@ public final class ClusterMember implements AutoCloseable {
         return node;
     }
 
+    /**
+     * Whether every partition has its backups in place as far as this member knows (no migration under way): until
+     * then a crash can lose what the migrating partitions hold. For tests that crash members.
+     */
+    boolean isClusterSafe() {
+        return hazelcast.getPartitionService().isClusterSafe();
+    }
+
     /** Whether this member holds the primary copy of {@code container} (for tests that crash its owner). */
     boolean owns(ContainerRef container) {
         return hazelcast.getPartitionService().getPartition(container.id()).getOwner().localMember();

@@ -72,13 +72,24 @@ final class LocalCluster implements AutoCloseable {
         return members.get(index);
     }
 
-    /** Waits until every member sees {@code size} members. */
+    /**
+     * Waits until every member sees {@code size} members and the partitions' backups are in place (a crash during
+     * a migration may lose what the moving partitions hold, which tests of a member's crash must not run into).
+     */
     void awaitSize(int size) {
         long deadline = System.nanoTime() + Duration.ofSeconds(60).toNanos();
         for (ClusterMember member : members) {
             while (member.memberCount() != size) {
                 if (System.nanoTime() > deadline) {
                     throw new AssertionError(member + " sees " + member.memberCount() + " members, not " + size);
+                }
+                sleep(20);
+            }
+        }
+        for (ClusterMember member : members) {
+            while (!member.isClusterSafe()) {
+                if (System.nanoTime() > deadline) {
+                    throw new AssertionError(member + ": partitions still migrating after 60 s");
                 }
                 sleep(20);
             }

@@ -30,6 +30,7 @@ import robotworld.explorer.monitor.WorldMonitor;
 import robotworld.observe.WorldTap;
 import robotworld.recording.Replayer;
 import robotworld.recording.mcap.McapFormatException;
+import robotworld.space.SpaceInterruptedException;
 import robotworld.space.server.SpaceServer;
 import robotworld.telemetry.SafetyTelemetry;
 
@@ -191,17 +192,21 @@ final class ReplayCommand implements Callable<Integer> {
             out.flush();
             long started = System.nanoTime();
             long[] lastLine = {System.nanoTime()};
-            replayer.play(server.space(), options, progress -> {
-                long now = System.nanoTime();
-                if (!quiet && now - lastLine[0] >= 1_000_000_000L) {
-                    lastLine[0] = now;
-                    err.printf(Locale.ROOT, "\rpass %d: %d/%d messages, %.1f of %.1f s recorded time%s",
-                            progress.pass(), progress.played(), progress.total(),
-                            progress.position().toMillis() / 1000.0, progress.length().toMillis() / 1000.0,
-                            progress.skipped() > 0 ? ", " + progress.skipped() + " unreadable" : "");
-                    err.flush();
-                }
-            });
+            try {
+                replayer.play(server.space(), options, progress -> {
+                    long now = System.nanoTime();
+                    if (!quiet && now - lastLine[0] >= 1_000_000_000L) {
+                        lastLine[0] = now;
+                        err.printf(Locale.ROOT, "\rpass %d: %d/%d messages, %.1f of %.1f s recorded time%s",
+                                progress.pass(), progress.played(), progress.total(),
+                                progress.position().toMillis() / 1000.0, progress.length().toMillis() / 1000.0,
+                                progress.skipped() > 0 ? ", " + progress.skipped() + " unreadable" : "");
+                        err.flush();
+                    }
+                });
+            } catch (SpaceInterruptedException ctrlC) {
+                Thread.currentThread().interrupt(); // Ctrl-C while a call to the replay space waited: a stop too
+            }
             boolean interrupted = Thread.interrupted();
             if (!quiet) {
                 err.printf(Locale.ROOT, "%nreplay %s after %.1f s%n", interrupted ? "stopped" : "finished",
@@ -219,7 +224,7 @@ final class ReplayCommand implements Callable<Integer> {
             return 0;
         } finally {
             if (consoleMonitor != null) {
-                Thread.sleep(200); // the last answers reach the console
+                pauseThroughInterrupts(200); // the last answers reach the console, even after a late Ctrl-C
                 consoleMonitor.close();
             }
             if (windowMonitor.get() != null) {
@@ -240,6 +245,22 @@ final class ReplayCommand implements Callable<Integer> {
             } catch (IllegalStateException e) {
                 // shutting down already
             }
+        }
+    }
+
+    /** Sleeps {@code millis}, interrupted or not; an interrupt is kept for the caller. */
+    private static void pauseThroughInterrupts(long millis) {
+        long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
+        boolean interrupted = false;
+        for (long left; (left = end - System.nanoTime()) > 0; ) {
+            try {
+                TimeUnit.NANOSECONDS.sleep(left);
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
     }
 
