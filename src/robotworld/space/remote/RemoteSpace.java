@@ -12,9 +12,11 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -111,7 +113,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     /** A pool per server, in the order of {@link #endpoints}; calls in progress on a server left keep its pool. */
     private final List<ConnectionPool> pools;
     /** Whether a check that the first server answers again is under way. */
-    private final java.util.concurrent.atomic.AtomicBoolean checkingHome = new java.util.concurrent.atomic.AtomicBoolean();
+    private final AtomicBoolean checkingHome = new AtomicBoolean();
     private static final System.Logger LOG = System.getLogger(RemoteSpace.class.getName());
     /** Takes that wait without a thread; created when first used. */
     private AsyncCalls asyncCalls;
@@ -264,7 +266,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                     checkingHome.set(false);
                 }
             });
-        } catch (java.util.concurrent.RejectedExecutionException closedMeanwhile) {
+        } catch (RejectedExecutionException closedMeanwhile) {
             checkingHome.set(false);
         }
     }
