@@ -216,19 +216,22 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             return;
         }
         ConnectionPool old;
+        ConnectionPool next;
         synchronized (this) {
             if (endpoint != failed) {
                 return; // moved on already
             }
-            int next = rotation.failed(System.nanoTime(), couldNotBeReached);
-            endpoint = endpoints.get(next);
+            int index = rotation.failed(System.nanoTime(), couldNotBeReached);
+            endpoint = endpoints.get(index);
             old = pool;
-            pool = pools.get(next);
+            pool = pools.get(index);
+            next = pool;
             if (asyncCalls != null) {
                 asyncCalls.endpointChanged();
             }
         }
         old.discardIdle();
+        next.discardIdle(); // left idle when this client last used that server: its idle timeout may have closed them
         LOG.log(System.Logger.Level.INFO, "space server " + failed.url() + (couldNotBeReached ? " does not answer ("
                 : " cannot serve (") + (why instanceof Throwable t && t.getMessage() != null ? t.getMessage() : why)
                 + "); going on with " + endpoint.url());
@@ -303,6 +306,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             left = endpoint;
             endpoint = home;
             pool = pools.get(rotation.wentHome());
+            pool.discardIdle(); // connections to the server before it failed
             if (asyncCalls != null) {
                 asyncCalls.endpointChanged();
             }
@@ -992,10 +996,16 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             pool.release(connection);
             return response.status() == 200;
         } catch (IOException e) {
+            // a pooled connection the server closed while it was idle fails like this too: not a reason to move on
+            boolean stale = connection != null && connection.reused && !connection.hasBufferedInput();
             if (connection != null) {
                 pool.discard(connection);
             }
-            failover(used, e);
+            if (stale) {
+                pool.discardIdle(); // the acks are sent again on a fresh connection
+            } else {
+                failover(used, e);
+            }
             return false;
         }
     }
