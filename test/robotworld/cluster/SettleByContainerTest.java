@@ -41,7 +41,9 @@ class SettleByContainerTest {
         SpaceServer.Options options = SpaceServer.Options.defaults().port(0).stopGraceMillis(100).leaseMillis(500);
         first = SpaceServer.start(cluster.member(0).openSpace("settle"), options);
         second = SpaceServer.start(cluster.member(1).openSpace("settle"), options);
-        client = RemoteSpace.open(first.uri());
+        // the first calls on a fresh cluster create its maps on both members: on a busy machine that can take
+        // longer than the default 3 s allowance, which is not what these tests are about
+        client = RemoteSpace.open(List.of(first.uri()), RemoteSpace.Options.defaults().networkAllowanceMillis(10_000));
     }
 
     @AfterEach
