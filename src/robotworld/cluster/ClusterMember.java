@@ -104,7 +104,22 @@ public final class ClusterMember implements AutoCloseable {
 
     /** Whether this member holds the primary copy of {@code container} (for tests that crash its owner). */
     boolean owns(ContainerRef container) {
-        return hazelcast.getPartitionService().getPartition(container.id()).getOwner().localMember();
+        // a member that has not yet received the partition table knows no owner: wait for it
+        long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
+        com.hazelcast.cluster.Member owner;
+        while ((owner = hazelcast.getPartitionService().getPartition(container.id()).getOwner()) == null) {
+            if (System.nanoTime() - deadline > 0) {
+                throw new IllegalStateException("no owner known for " + container + " after 10 s");
+            }
+            Thread.onSpinWait();
+            try {
+                Thread.sleep(10);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("interrupted while waiting for the partition table", e);
+            }
+        }
+        return owner.localMember();
     }
 
     /**
