@@ -111,7 +111,6 @@ public final class ClusterMember implements AutoCloseable {
             if (System.nanoTime() - deadline > 0) {
                 throw new IllegalStateException("no owner known for " + container + " after 10 s");
             }
-            Thread.onSpinWait();
             try {
                 Thread.sleep(10);
             } catch (InterruptedException e) {

@@ -835,8 +835,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 }
                 // a keep-alive connection the server closed while idle fails like this too; only calls whose
                 // outcome cannot be asked about rely on that guess
-                boolean stale = !(e instanceof ServerUnavailable) && connection != null && connection.reused
-                        && !connection.hasBufferedInput();
+                boolean stale = !(e instanceof ServerUnavailable) && closedWhileIdle(connection);
                 pool.discardIdle(); // a broken connection usually means they are all broken (server restart)
                 if (!stale) {
                     failover(used, e); // with several servers, settle and repeat the call with the next one
@@ -980,6 +979,11 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         }
     }
 
+    /** Whether a failed exchange most likely met a pooled connection the server had closed while it was idle. */
+    private static boolean closedWhileIdle(HttpConnection connection) {
+        return connection != null && connection.reused && !connection.hasBufferedInput();
+    }
+
     private boolean sendAcks(String header) {
         if (closed) {
             return true; // close() sends what is left
@@ -997,7 +1001,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             return response.status() == 200;
         } catch (IOException e) {
             // a pooled connection the server closed while it was idle fails like this too: not a reason to move on
-            boolean stale = connection != null && connection.reused && !connection.hasBufferedInput();
+            boolean stale = closedWhileIdle(connection);
             if (connection != null) {
                 pool.discard(connection);
             }
