@@ -140,13 +140,17 @@ class WorldViewTest {
         long deadline = System.nanoTime() + Duration.ofSeconds(20).toNanos();
         do { // as a control program does: command the tracks on every round, which also feeds the watchdog
             assertTrue(System.nanoTime() < deadline, "the robot reached the crate, at " + robot.pose());
-            // steer at the middle of the crate's face: the two tracks start one call apart (longer on a busy
-            // machine), which turns the robot, and unsteered it may reach a wall instead
-            double error = steeringError(robot.pose(), 2000, 1000);
-            command(() -> motor.setMotor(1, Math.max(-1, Math.min(1, 1.0 - error / 20))));
-            command(() -> motor.setMotor(2, Math.max(-1, Math.min(1, 1.0 + error / 20))));
+            // steer along the line through the middle of the crate's face, aiming far beyond it so the robot
+            // arrives square to the face: the two tracks start one call apart (longer on a busy machine), which
+            // turns the robot, and unsteered it may reach a wall instead
+            double error = steeringError(robot.pose(), 4000, 1000);
+            // and slow down for the last 200 mm, as a careful program does: the two stop commands below are one
+            // call apart too, and a track still running at full speed against the crate turns the robot in place
+            double speed = Math.max(0.1, Math.min(1, (STOP_X - robot.pose().x()) / 200));
+            command(() -> motor.setMotor(1, Math.max(-1, Math.min(1, speed * (1.0 - error / 20)))));
+            command(() -> motor.setMotor(2, Math.max(-1, Math.min(1, speed * (1.0 + error / 20)))));
             Thread.sleep(20);
-        } while (bumper.getAllBumper() == 0); // 1250 mm at 300 mm/s, four times as fast: about a second
+        } while (bumper.getAllBumper() == 0); // 1250 mm at up to 300 mm/s, four times as fast: a second or two
         command(() -> motor.setMotor(1, 0));
         command(() -> motor.setMotor(2, 0));
         assertEquals(STOP_X, robot.pose().x(), 5, "stopped against the crate's face at " + robot.pose());
