@@ -4,12 +4,16 @@ import java.lang.System.Logger.Level;
 import java.net.URI;
 import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
 
+import com.hazelcast.core.HazelcastInstance;
+
 import robotworld.space.AsyncTakes;
+import robotworld.space.ClusterHealth;
 import robotworld.space.ContainerDestroyedException;
 import robotworld.space.ContainerInfo;
 import robotworld.space.ContainerNameTakenException;
@@ -71,6 +75,14 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
 
     String name() {
         return name;
+    }
+
+    /** The members this member sees and whether Hazelcast reports every partition's backups in place. */
+    @Override
+    public Optional<ClusterHealth> clusterHealth() {
+        HazelcastInstance hazelcast = node.hazelcast();
+        return Optional.of(new ClusterHealth(hazelcast.getCluster().getMembers().size(),
+                hazelcast.getPartitionService().isClusterSafe()));
     }
 
     ClusterNode node() {

@@ -1,6 +1,7 @@
 package robotworld.space;
 
 import java.util.List;
+import java.util.Optional;
 
 /**
  * The space as a server serves it: {@link Capi}, plus removals that can be undone until the client confirms them,
@@ -145,6 +146,14 @@ public interface SpaceEngine extends Capi {
      */
     default List<Entry> shift(ContainerRef container, Timeout timeout, List<Item> items, String callId) {
         return shift(container, timeout, items);
+    }
+
+    /**
+     * The cluster this engine runs on, for operators ({@code GET <path>} of a space server answers it); empty for an
+     * engine that lives in one process. May ask the other members: not for hot paths.
+     */
+    default Optional<ClusterHealth> clusterHealth() {
+        return Optional.empty();
     }
 
     /** Where the outcome of an operation started with one of the {@code ...Later} methods goes. */

@@ -5,6 +5,9 @@ import java.io.IOException;
 import java.io.InputStreamReader;
 import java.lang.management.ManagementFactory;
 import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -29,6 +32,9 @@ import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 
 import robotworld.core.IRDistanceModule;
 import robotworld.space.Capi;
@@ -185,6 +191,50 @@ public final class ClusterKillSoak {
         }
     }
 
+    /**
+     * Waits until every member's server says it sees all members and every backup is in place, as an operator does
+     * before taking down the next computer; prints how long that took when it was not at once.
+     */
+    private static void awaitWholeAndSafe(List<Member> members) throws Exception {
+        HttpClient http = HttpClient.newBuilder()
+                .connectTimeout(Duration.ofSeconds(2)).build();
+        long start = System.nanoTime();
+        long deadline = start + TimeUnit.SECONDS.toNanos(120);
+        List<String> last = new ArrayList<>();
+        while (true) {
+            last.clear();
+            for (Member member : members) {
+                try {
+                    String body = http.send(HttpRequest.newBuilder(URI.create(member.url))
+                            .timeout(Duration.ofSeconds(2)).GET().build(),
+                            HttpResponse.BodyHandlers.ofString()).body();
+                    JsonNode cluster = JSON
+                            .readTree(body).path("cluster");
+                    if (cluster.path("members").asInt() != members.size()
+                            || !cluster.path("backupsInPlace").asBoolean()) {
+                        last.add(member.url + " " + cluster);
+                    }
+                } catch (IOException e) {
+                    last.add(member.url + " " + e);
+                }
+            }
+            long waited = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
+            if (last.isEmpty()) {
+                if (waited > 500) {
+                    System.out.printf(Locale.ROOT, "         (waited %,d ms for the cluster to be whole and safe)%n",
+                            waited);
+                }
+                return;
+            }
+            if (System.nanoTime() > deadline) {
+                throw new IllegalStateException("the cluster is not whole and safe after 120 s: " + last);
+            }
+            Thread.sleep(200);
+        }
+    }
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
     private static List<URI> rotated(List<Member> members, int first) {
         List<URI> urls = new ArrayList<>();
         for (int i = 0; i < members.size(); i++) {
@@ -306,6 +356,7 @@ public final class ClusterKillSoak {
             for (int kill = 0; kill < KILLS; kill++) {
                 int victim = kill % members.size();
                 Member dead = members.get(victim);
+                awaitWholeAndSafe(members); // the acceptance kills one member of a healthy cluster, not a second fault
                 long killedAt = System.nanoTime();
                 dead.process.destroyForcibly(); // SIGKILL
                 System.out.printf(Locale.ROOT, "%tT.%<tL kill %d of member %d (%s)%n", System.currentTimeMillis(),

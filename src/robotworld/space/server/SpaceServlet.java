@@ -7,12 +7,14 @@ import java.io.OutputStream;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger.Level;
 import java.nio.charset.StandardCharsets;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
 import jakarta.servlet.http.HttpServletResponse;
 
+import robotworld.space.ClusterHealth;
 import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireError;
 import robotworld.space.wire.WireFormatException;
@@ -88,8 +90,15 @@ final class SpaceServlet extends HttpServlet {
                     .field("lease", state.options.leaseMillis())
                     .field("maxBodyBytes", state.wire.limits().maxBodyBytes())
                     .field("maxDepth", state.wire.limits().maxDepth())
-                    .field("maxCount", state.wire.limits().maxCount())
-                    .endObject();
+                    .field("maxCount", state.wire.limits().maxCount());
+            Optional<ClusterHealth> cluster = state.space.clusterHealth();
+            if (cluster.isPresent()) { // only a clustered space has members to count
+                out.field("cluster").startObject()
+                        .field("members", cluster.get().members())
+                        .field("backupsInPlace", cluster.get().backupsInPlace())
+                        .endObject();
+            }
+            out.endObject();
         }
         send(response, 200, body);
     }
