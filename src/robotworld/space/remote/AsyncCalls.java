@@ -52,8 +52,12 @@ final class AsyncCalls implements Runnable {
     private final ConcurrentLinkedQueue<Runnable> tasks = new ConcurrentLinkedQueue<>();
     /** Calls whose request is out (or going out), for the deadline checks. */
     private final Set<Call> active = ConcurrentHashMap.newKeySet();
-    /** Connections kept for reuse, registered for reading (so a close by the server is noticed). */
-    private final ConcurrentLinkedDeque<SocketChannel> idle = new ConcurrentLinkedDeque<>();
+    /**
+     * Connections kept for reuse, registered for reading (so a close by the server is noticed), each with the
+     * server it goes to: after a failover, one to the server just left is never reused, even before
+     * {@link #endpointChanged} has closed them.
+     */
+    private final ConcurrentLinkedDeque<IdleChannel> idle = new ConcurrentLinkedDeque<>();
     private Thread thread;
     private volatile boolean closed;
 
@@ -101,11 +105,28 @@ final class AsyncCalls implements Runnable {
     /** The client moved on to another server: idle connections to the old one are of no use any more. */
     void endpointChanged() {
         execute(() -> {
-            SocketChannel channel;
-            while ((channel = idle.pollFirst()) != null) {
-                closeQuietly(channel);
+            IdleChannel unused;
+            while ((unused = idle.pollFirst()) != null) {
+                closeQuietly(unused.channel());
             }
         });
+    }
+
+    /** An idle connection and the server it goes to. */
+    private record IdleChannel(SocketChannel channel, Endpoint endpoint) {
+    }
+
+    /** The most recently used idle connection to the client's current server, closing any to other servers. */
+    private IdleChannel pollIdle() {
+        IdleChannel candidate;
+        while ((candidate = idle.pollFirst()) != null) {
+            if (candidate.endpoint() == owner.endpoint()) {
+                return candidate;
+            }
+            IdleChannel elsewhere = candidate;
+            execute(() -> closeQuietly(elsewhere.channel())); // its key belongs to the I/O thread
+        }
+        return null;
     }
 
     @Override
@@ -141,7 +162,7 @@ final class AsyncCalls implements Runnable {
             for (Call call : List.copyOf(active)) {
                 call.finish(null, new SpaceClosedException("the remote space " + owner.url() + " was closed"));
             }
-            idle.forEach(AsyncCalls::closeQuietly);
+            idle.forEach(unused -> closeQuietly(unused.channel()));
             try {
                 selector.close();
             } catch (IOException ignored) {
@@ -151,7 +172,7 @@ final class AsyncCalls implements Runnable {
     }
 
     private void closeIdle(SocketChannel channel) {
-        idle.remove(channel);
+        idle.removeIf(unused -> unused.channel() == channel);
         closeQuietly(channel);
     }
 
@@ -237,9 +258,12 @@ final class AsyncCalls implements Runnable {
             prepare(now);
             active.add(this);
             try {
-                channel = idle.pollFirst();
-                reused = channel != null;
-                if (channel == null) {
+                IdleChannel reusable = pollIdle();
+                reused = reusable != null;
+                if (reused) {
+                    channel = reusable.channel();
+                    connectedTo = reusable.endpoint();
+                } else {
                     channel = SocketChannel.open();
                     channel.configureBlocking(false);
                     channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
@@ -268,10 +292,11 @@ final class AsyncCalls implements Runnable {
             if (!running()) {
                 return true;
             }
-            SocketChannel idleChannel = idle.pollFirst();
-            if (idleChannel == null) {
+            IdleChannel reusable = pollIdle();
+            if (reusable == null) {
                 return false;
             }
+            SocketChannel idleChannel = reusable.channel();
             SelectionKey idleKey = idleChannel.keyFor(selector);
             if (idleKey == null || !idleKey.isValid()) {
                 closeQuietly(idleChannel);
@@ -279,6 +304,7 @@ final class AsyncCalls implements Runnable {
             }
             prepare(System.nanoTime());
             channel = idleChannel;
+            connectedTo = reusable.endpoint();
             key = idleKey;
             reused = true;
             active.add(this);
@@ -373,7 +399,7 @@ final class AsyncCalls implements Runnable {
                 closeQuietly(channel);
             } else {
                 key.interestOps(SelectionKey.OP_READ); // notices the server closing it while idle
-                idle.addFirst(channel);
+                idle.addFirst(new IdleChannel(channel, connectedTo));
             }
             channel = null;
             answered(answer);
@@ -432,7 +458,7 @@ final class AsyncCalls implements Runnable {
 
         /** When this call's connection attempts started failing. */
         private long failingSince;
-        /** The server this call's last new connection went to. */
+        /** The server this call's connection goes to. */
         private Endpoint connectedTo;
 
         private long firstFailure() {

@@ -114,6 +114,42 @@ class RemoteRecoveryTest {
         server = SpaceServer.start(space, serverOptions);
     }
 
+    // ---- a keep-alive connection the server closed ----
+
+    /**
+     * A take's confirmation sent alone on a pooled connection that the server (here, the link) closed while it was
+     * idle fails on that connection; that is no sign of a failing server: the client sends it again on a fresh
+     * connection and stays with its server, and the take stays confirmed (its entry is not put back after the lease).
+     */
+    @Test
+    void aConfirmationMeetingAConnectionTheServerClosedWhileIdleIsSentAgainWithoutLeavingTheServer() throws Exception {
+        SpaceServer.Options shortLease = SpaceServer.Options.defaults().port(0).stopGraceMillis(300).leaseMillis(1_000);
+        SpaceServer first = SpaceServer.start(space, shortLease);
+        SpaceServer second = SpaceServer.start(space, shortLease);
+        try (robotworld.testsupport.LinkFaultProxy link = new robotworld.testsupport.LinkFaultProxy(first.port())) {
+            java.net.URI viaLink = java.net.URI.create("http://127.0.0.1:"
+                    + link.portName().substring(link.portName().lastIndexOf(':') + 1) + first.uri().getPath());
+            RemoteSpace client = RemoteSpace.open(List.of(viaLink, second.uri()), RemoteSpace.Options.defaults()
+                    .networkAllowanceMillis(ALLOWANCE_MILLIS).ackDelayMicros(500_000));
+            clients.add(client);
+            ContainerRef ref = client.createContainer(ContainerSpec.of(Order.FIFO));
+            client.write(ref, Timeout.TRY_ONCE, Entry.of(1));
+            assertEquals(List.of(Entry.of(1)), client.take(ref, Timeout.TRY_ONCE)); // confirmed 500 ms later, alone
+            int connections = link.connections();
+            link.drop(); // the server's end of every connection closes, the client's pooled one included
+            link.restore();
+
+            eventually("the confirmation went again on a new connection", () -> link.connections() > connections);
+            assertEquals(viaLink, client.url(), "the client stays with its server");
+            Thread.sleep(1_000 + 500); // past the lease: an unconfirmed take's entry would be back by now
+            assertEquals(0, client.describeContainer(ref).size(), "the take stays confirmed");
+            assertEquals(viaLink, client.url(), "the client stays with its server");
+        } finally {
+            first.stop();
+            second.stop();
+        }
+    }
+
     // ---- graceful restart ----
 
     @Test
