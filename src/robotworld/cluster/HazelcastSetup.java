@@ -50,6 +50,9 @@ final class HazelcastSetup {
         config.setProperty("hazelcast.max.no.heartbeat.seconds",
                 Long.toString(options.failureDetection().toSeconds()));
         config.setProperty("hazelcast.invocation.retry.pause.millis", "100");
+        // a member whose connection broke and that refuses a new one twice (100 ms apart) is suspected dead at once:
+        // a crashed process, not a slow one (a slow member keeps its connections); Hazelcast waits for three
+        config.setProperty("hazelcast.connection.monitor.max.faults", "2");
         // a call whose owner stays silent this long fails (and is repeated, at most once in effect)
         config.setProperty("hazelcast.operation.call.timeout.millis",
                 Long.toString(Math.max(1_000, options.callAllowance().toMillis())));

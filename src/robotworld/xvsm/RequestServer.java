@@ -261,6 +261,16 @@ final class RequestServer {
         }
     }
 
+    /** A failure and what caused it, on one line (e.g. which network error made the space unreachable). */
+    private static String withCauses(Throwable failure) {
+        StringBuilder line = new StringBuilder(failure.toString());
+        for (Throwable cause = failure.getCause(); cause != null && cause != cause.getCause();
+                cause = cause.getCause()) {
+            line.append(": ").append(cause);
+        }
+        return line.toString();
+    }
+
     private void retryLater(RuntimeException failure, List<Item> undelivered) {
         if (failure instanceof SpaceClosedException || isStopping() && failure instanceof SpaceException) {
             if (undelivered != null) {
@@ -281,7 +291,7 @@ final class RequestServer {
         }
         if (pause == 0 && failure instanceof SpaceException) {
             LOG.warn("{}: cannot serve requests ({}); trying again with growing pauses up to {} ms", name,
-                    failure.toString(), LONGEST_PAUSE_MILLIS);
+                    withCauses(failure), LONGEST_PAUSE_MILLIS);
         } else if (pause == 0) {
             // not the space: a fault of this program, with the trace to find it
             LOG.warn("{}: serving failed ({}); requests taken may go unanswered; trying again with growing pauses"

@@ -235,6 +235,34 @@ public final class ClusterKillSoak {
 
     private static final ObjectMapper JSON = new ObjectMapper();
 
+    /**
+     * {@code -Dbench.dumpAfterKillMillis=1000,1500}: thread dumps of the surviving members at those times after each
+     * kill, into the log folder, to see what their threads wait for while calls are slow to come back.
+     */
+    private static void dumpSurvivors(List<Member> members, Member dead, int kill, long killedAt) throws Exception {
+        String when = System.getProperty("bench.dumpAfterKillMillis", "");
+        if (when.isBlank()) {
+            return;
+        }
+        for (String each : when.split(",")) {
+            long at = killedAt + TimeUnit.MILLISECONDS.toNanos(Long.parseLong(each.trim()));
+            long early = at - System.nanoTime();
+            if (early > 0) {
+                TimeUnit.NANOSECONDS.sleep(early);
+            }
+            for (int i = 0; i < members.size(); i++) {
+                Member member = members.get(i);
+                if (member != dead) {
+                    new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "jcmd").toString(),
+                            Long.toString(member.process.pid()), "Thread.print")
+                            .redirectOutput(logs.resolve("dump-kill" + kill + "-member" + i + "-at" + each.trim()
+                                    + "ms.txt").toFile())
+                            .start();
+                }
+            }
+        }
+    }
+
     private static List<URI> rotated(List<Member> members, int first) {
         List<URI> urls = new ArrayList<>();
         for (int i = 0; i < members.size(); i++) {
@@ -251,6 +279,8 @@ public final class ClusterKillSoak {
 
     /** Times (nanoTime) of each caller thread's answered calls. */
     private static final List<ConcurrentLinkedQueue<Long>> answered = new ArrayList<>();
+    /** When calls of each module were answered: shows whether a slow return is one module's or everyone's. */
+    private static final List<ConcurrentLinkedQueue<Long>> answeredByModule = new ArrayList<>();
     private static final AtomicLong mismatches = new AtomicLong();
     private static final AtomicLong pastBound = new AtomicLong();
     /** Calls that gave up at their bound, the thread running a little later than the deadline it woke for. */
@@ -298,6 +328,7 @@ public final class ClusterKillSoak {
             RemoteSpace.Options options = RemoteSpace.Options.defaults();
             // providers: each module served by its own runtime
             for (int m = 0; m < MODULES; m++) {
+                answeredByModule.add(new ConcurrentLinkedQueue<>());
                 XVSMRuntime provider = XVSMRuntime.using(RemoteSpace.open(rotated(members, m), options),
                         "robot-" + m, true);
                 closing.add(provider);
@@ -362,8 +393,16 @@ public final class ClusterKillSoak {
                 System.out.printf(Locale.ROOT, "%tT.%<tL kill %d of member %d (%s)%n", System.currentTimeMillis(),
                         kill + 1, victim, dead.url);
                 dead.process.waitFor(30, TimeUnit.SECONDS);
-                Thread.sleep(SETTLE_MILLIS);
-                String timeline = timeline(killedAt); // before longestPause, which trims the call times
+                dumpSurvivors(members, dead, kill + 1, killedAt);
+                Thread.sleep(Math.max(0, SETTLE_MILLIS
+                        - TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - killedAt)));
+                String timeline = timeline(answered, killedAt); // before longestPause, which trims the call times
+                StringBuilder byModule = new StringBuilder();
+                for (int m = 0; m < answeredByModule.size(); m++) {
+                    byModule.append(String.format(Locale.ROOT, "%n           module %d (first server %d): %s", m,
+                            m % members.size(), timeline(List.of(answeredByModule.get(m)), killedAt)));
+                    answeredByModule.get(m).removeIf(at -> at < killedAt);
+                }
                 long resumed = resumedAfter(killedAt);
                 resumes.add(resumed);
                 long pause = longestPause(killedAt - TimeUnit.SECONDS.toNanos(1),
@@ -373,7 +412,8 @@ public final class ClusterKillSoak {
                         + " %,d ms (%d = not within the %d ms watched); longest wait of one caller thread %,d ms; %,d calls answered so far%n", kill + 1,
                         victim, dead.address, TimeUnit.NANOSECONDS.toMillis(resumed), SETTLE_MILLIS, SETTLE_MILLIS,
                         TimeUnit.NANOSECONDS.toMillis(pause), calls.sum());
-                System.out.println("         answered calls per 250 ms from 1 s before the kill: " + timeline);
+                System.out.println("         answered calls per 250 ms from 1 s before the kill: " + timeline
+                        + byModule);
                 List<String> others = new ArrayList<>();
                 for (Member other : members) {
                     if (other != dead) {
@@ -474,7 +514,9 @@ public final class ClusterKillSoak {
                     mismatches.incrementAndGet();
                 }
                 calls.increment();
-                times.add(System.nanoTime());
+                long now = System.nanoTime();
+                times.add(now);
+                answeredByModule.get(module).add(now);
             } catch (RuntimeException e) {
                 failures.computeIfAbsent(e.getClass().getSimpleName(), k -> new LongAdder()).increment();
             }
@@ -519,7 +561,7 @@ public final class ClusterKillSoak {
     }
 
     /** Answered calls of all threads per 250 ms, from 1 s before {@code killedAt} to 5 s after it; "|" at the kill. */
-    private static String timeline(long killedAt) {
+    private static String timeline(List<ConcurrentLinkedQueue<Long>> answered, long killedAt) {
         long bucket = TimeUnit.MILLISECONDS.toNanos(250);
         long from = killedAt - 4 * bucket;
         int[] counts = new int[24];

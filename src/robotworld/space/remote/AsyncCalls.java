@@ -421,7 +421,8 @@ final class AsyncCalls implements Runnable {
                         owner.failover(connectedTo, "it could not complete the call: " + answer.message);
                     }
                     cancelOnServer();
-                    finish(null, new robotworld.space.SpaceUnavailableException(owner.url(), answer.message, null));
+                    finish(null, new robotworld.space.SpaceUnavailableException(
+                            connectedTo != null ? connectedTo.url() : owner.url(), answer.message, null));
                 } else if (kind == WireError.STOPPING || kind == WireError.BUSY) {
                     if (answer.written) {
                         goOnWithTake();
@@ -513,7 +514,9 @@ final class AsyncCalls implements Runnable {
                 retryLater(); // not connected yet (a burst of connections, a full accept queue): nothing happened
                 return;
             }
-            finish(null, new SpaceUnavailableException(owner.url(), "cannot reach the space server for "
+            // named after the server that failed: after a failover the client's own URL is already the next one
+            finish(null, new SpaceUnavailableException(connectedTo != null ? connectedTo.url() : owner.url(),
+                    "cannot reach the space server for "
                     + request.operation() + (composite ? " (whether the shift happened is unknown)" : ""), e));
         }
 
