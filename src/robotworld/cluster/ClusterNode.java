@@ -55,6 +55,8 @@ final class ClusterNode {
     private static final long INBOX_CHECK_MILLIS = 5_000;
     /** How often a member makes the containers it owns put back held removals whose lease ran out. */
     private static final long SWEEP_MILLIS = 1_000;
+    /** How long a departed member's operations are still looked for by the sweeps. */
+    private static final long DEPARTED_KEPT_NANOS = TimeUnit.MINUTES.toNanos(5);
 
     private final HazelcastInstance hazelcast;
     private final ClusterOptions options;
@@ -64,6 +66,8 @@ final class ClusterNode {
     private final AtomicLong counter = new AtomicLong();
     private final ConcurrentSkipListSet<Long> inFlight = new ConcurrentSkipListSet<>();
     private final ConcurrentMap<OpId, LocalWaiter> waiters = new ConcurrentHashMap<>();
+    /** Members that left lately, with when: the owners' sweeps forget operations of theirs that arrived late. */
+    private final ConcurrentMap<UUID, Long> departed = new ConcurrentHashMap<>();
     private final ConcurrentMap<String, EventInbox> inboxes = new ConcurrentHashMap<>();
     private final ConcurrentMap<String, Long> staleChecks = new ConcurrentHashMap<>();
     /** Registration of this member's listener on its own topic. */
@@ -99,6 +103,7 @@ final class ClusterNode {
         this.membershipRegistration = hazelcast.getCluster().addMembershipListener(new MembershipListener() {
             @Override
             public void memberAdded(MembershipEvent event) {
+                departed.remove(event.getMember().getUuid()); // back under the same id: not departed
             }
 
             @Override
@@ -497,13 +502,16 @@ final class ClusterNode {
         if (closed) {
             return;
         }
+        // a departed member's late operations can only have been sent before it died: minutes are plenty
+        departed.values().removeIf(at -> System.nanoTime() - at > DEPARTED_KEPT_NANOS);
+        Set<UUID> gone = Set.copyOf(departed.keySet());
         try {
             for (DistributedObject object : hazelcast.getDistributedObjects()) {
                 if (object instanceof IMap<?, ?> && object.getName().startsWith(HazelcastSetup.CONTAINERS)) {
                     IMap<String, ContainerRecord> map = containers(object.getName()
                             .substring(HazelcastSetup.CONTAINERS.length()));
                     for (String container : map.localKeySet()) {
-                        map.executeOnKey(container, ContainerCall.sweep());
+                        map.executeOnKey(container, ContainerCall.sweep(gone));
                     }
                 }
             }
@@ -531,6 +539,7 @@ final class ClusterNode {
             return;
         }
         LOG.log(Level.INFO, "cluster member " + departed.getAddress() + " left");
+        this.departed.put(departed.getUuid(), System.nanoTime());
         if (isOldest()) {
             forgetDeparted();
         }

@@ -71,6 +71,8 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
     private List<OpId> targets = List.of();
     private long after;
     private Set<UUID> live = Set.of();
+    /** For a sweep: members known to have left, whose late operations are forgotten as theirs were on leaving. */
+    private Set<UUID> departed = Set.of();
     private List<PlacedEntry> restoring = List.of();
     /** The call id of the server's client this call runs for, or null. */
     private String client;
@@ -184,7 +186,19 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
     }
 
     static ContainerCall sweep() {
-        return new ContainerCall(Kind.SWEEP, null);
+        return sweep(Set.of());
+    }
+
+    /**
+     * The owner's periodic call: held removals whose lease ran out come back, and what members that left still hold
+     * here is forgotten. The oldest member forgets a departed member's operations when it leaves, but an operation
+     * the departed member sent just before it died can reach the owner after that; queued then, it would hold what
+     * it is served until it counts as abandoned (minutes).
+     */
+    static ContainerCall sweep(Set<UUID> departed) {
+        ContainerCall c = new ContainerCall(Kind.SWEEP, null);
+        c.departed = departed;
+        return c;
     }
 
     Kind kind() {
@@ -219,6 +233,9 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
                 rules.collectGarbage(call.member(), lowWater);
             } else if (kind == Kind.SWEEP) {
                 rules.expireReceipts();
+                if (!departed.isEmpty()) {
+                    rules.forgetMembers(member -> !departed.contains(member));
+                }
             }
             try {
                 outcome = run(record, rules);
@@ -252,7 +269,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
                 case WITHDRAW_AND_UNDO -> rules.withdraw(target, true);
                 case ACKNOWLEDGE -> rules.acknowledge(targets);
                 case READ_JOURNAL -> rules.readJournal(after, targets);
-                case FORGET_MEMBERS -> rules.forgetMembers(live);
+                case FORGET_MEMBERS -> rules.forgetMembers(live::contains);
                 case UNSUBSCRIBE, UNSUBSCRIBE_OLDER, ACK_RECEIPTS, RESTORE_RECEIPT, SWEEP ->
                         Outcome.of(Outcome.Status.DONE);
                 case TAKE_COMPLETED -> rules.takeCompleted(client);
@@ -284,7 +301,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             case DESCRIBE -> rules.describe();
             case READ_JOURNAL -> rules.readJournal(after, targets);
             case DESTROY_CONTAINER -> rules.destroy();
-            case FORGET_MEMBERS -> rules.forgetMembers(live);
+            case FORGET_MEMBERS -> rules.forgetMembers(live::contains);
         };
     }
 
@@ -330,6 +347,10 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
         for (UUID member : live) {
             Codec.writeUuid(out, member);
         }
+        out.writeInt(departed.size());
+        for (UUID member : departed) {
+            Codec.writeUuid(out, member);
+        }
         Codec.writePlacedList(out, restoring);
         out.writeString(client);
         out.writeInt(clients.size());
@@ -361,6 +382,13 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             live = new HashSet<>();
             for (int i = 0; i < liveCount; i++) {
                 live.add(Codec.readUuid(in));
+            }
+        }
+        int departedCount = in.readInt();
+        if (departedCount > 0) {
+            departed = new HashSet<>();
+            for (int i = 0; i < departedCount; i++) {
+                departed.add(Codec.readUuid(in));
             }
         }
         restoring = Codec.readPlacedList(in);

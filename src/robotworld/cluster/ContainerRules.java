@@ -422,28 +422,28 @@ final class ContainerRules {
      * Forgets members that left the cluster: their queued operations and subscriptions go, and what was served to
      * them but never collected is undone (a take's entries return), since no thread is left to receive it.
      */
-    Outcome forgetMembers(Set<UUID> live) {
+    Outcome forgetMembers(java.util.function.Predicate<UUID> live) {
         boolean changed = false;
         for (WaiterRecord waiter : List.copyOf(record.waiters())) {
-            if (waiter.kind() != WaiterRecord.Kind.RESTORE && !live.contains(waiter.id().member())) {
+            if (waiter.kind() != WaiterRecord.Kind.RESTORE && !live.test(waiter.id().member())) {
                 record.removeWaiter(waiter.id());
                 changed = true;
             }
         }
         for (Map.Entry<OpId, Completion> completion : List.copyOf(record.completions().entrySet())) {
-            if (!live.contains(completion.getKey().member())) {
+            if (!live.test(completion.getKey().member())) {
                 record.removeCompletion(completion.getKey());
                 undo(completion.getValue(), completion.getKey());
                 changed = true;
             }
         }
         for (OpId subscriber : List.copyOf(record.subscribers())) {
-            if (!live.contains(subscriber.member())) {
+            if (!live.test(subscriber.member())) {
                 record.removeSubscriber(subscriber);
             }
         }
         for (OpId call : List.copyOf(record.done().keySet())) {
-            if (!live.contains(call.member())) {
+            if (!live.test(call.member())) {
                 record.forget(call);
             }
         }

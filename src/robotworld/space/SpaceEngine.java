@@ -149,8 +149,8 @@ public interface SpaceEngine extends Capi {
     }
 
     /**
-     * The cluster this engine runs on, for operators ({@code GET <path>} of a space server answers it); empty for an
-     * engine that lives in one process. May ask the other members: not for hot paths.
+     * The cluster this engine runs on, for operators ({@code GET <path>/health} of a space server answers it); empty
+     * for an engine that lives in one process. May ask the other members and take a while: not for hot paths.
      */
     default Optional<ClusterHealth> clusterHealth() {
         return Optional.empty();

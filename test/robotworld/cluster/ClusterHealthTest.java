@@ -21,7 +21,7 @@ import robotworld.space.EmbeddedSpace;
 import robotworld.space.server.SpaceServer;
 
 /**
- * {@code GET <path>} of a clustered space server tells an operator how many members its member sees and whether every
+ * {@code GET <path>/health} of a clustered space server tells an operator how many members its member sees and whether every
  * partition has its backups in place, i.e. whether taking down another member is safe now.
  */
 class ClusterHealthTest {
@@ -58,7 +58,7 @@ class ClusterHealthTest {
             try {
                 JsonNode answer = get(server.uri());
                 assertFalse(answer.has("cluster"), answer.toString());
-                assertTrue(answer.has("maxWait"), "the rest of the description is there: " + answer);
+                assertTrue(answer.has("space"), "it names its space: " + answer);
             } finally {
                 server.stop();
             }
@@ -78,7 +78,8 @@ class ClusterHealthTest {
     }
 
     private static JsonNode get(URI server) throws Exception {
-        HttpResponse<String> response = HTTP.send(HttpRequest.newBuilder(server).timeout(Duration.ofSeconds(10))
+        HttpResponse<String> response = HTTP.send(HttpRequest.newBuilder(URI.create(server + "/health"))
+                .timeout(Duration.ofSeconds(10))
                 .GET().build(), HttpResponse.BodyHandlers.ofString());
         assertEquals(200, response.statusCode(), response.body());
         return JSON.readTree(response.body());

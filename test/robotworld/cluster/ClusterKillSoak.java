@@ -205,8 +205,8 @@ public final class ClusterKillSoak {
             last.clear();
             for (Member member : members) {
                 try {
-                    String body = http.send(HttpRequest.newBuilder(URI.create(member.url))
-                            .timeout(Duration.ofSeconds(2)).GET().build(),
+                    String body = http.send(HttpRequest.newBuilder(URI.create(member.url + "/health"))
+                            .timeout(Duration.ofSeconds(10)).GET().build(),
                             HttpResponse.BodyHandlers.ofString()).body();
                     JsonNode cluster = JSON
                             .readTree(body).path("cluster");
@@ -279,6 +279,10 @@ public final class ClusterKillSoak {
 
     /** Times (nanoTime) of each caller thread's answered calls. */
     private static final List<ConcurrentLinkedQueue<Long>> answered = new ArrayList<>();
+    /** When each write was acknowledged (wall clock, to match the member logs), for the report of lost ones. */
+    private static final Map<Long, Long> acknowledgedAt = new ConcurrentHashMap<>();
+    /** When each kill was made (wall clock). */
+    private static final List<Long> killedAtMillis = new java.util.concurrent.CopyOnWriteArrayList<>();
     /** When calls of each module were answered: shows whether a slow return is one module's or everyone's. */
     private static final List<ConcurrentLinkedQueue<Long>> answeredByModule = new ArrayList<>();
     private static final AtomicLong mismatches = new AtomicLong();
@@ -389,6 +393,7 @@ public final class ClusterKillSoak {
                 Member dead = members.get(victim);
                 awaitWholeAndSafe(members); // the acceptance kills one member of a healthy cluster, not a second fault
                 long killedAt = System.nanoTime();
+                killedAtMillis.add(System.currentTimeMillis());
                 dead.process.destroyForcibly(); // SIGKILL
                 System.out.printf(Locale.ROOT, "%tT.%<tL kill %d of member %d (%s)%n", System.currentTimeMillis(),
                         kill + 1, victim, dead.url);
@@ -442,11 +447,13 @@ public final class ClusterKillSoak {
             Set<Long> takenSet = new HashSet<>(takenList);
             long lost = 0;
             long written = 0;
+            List<String> lostOnes = new ArrayList<>();
             for (Set<Long> mine : acknowledged) {
                 written += mine.size();
-                for (Long value : mine) {
+                for (Long value : new java.util.TreeSet<>(mine)) {
                     if (!takenSet.contains(value)) {
                         lost++;
+                        lostOnes.add(describeLost(value, takenSet));
                     }
                 }
             }
@@ -468,6 +475,7 @@ public final class ClusterKillSoak {
                     sorted[sorted.length / 2], sorted[sorted.length - 1], Arrays.toString(sorted));
             System.out.printf(Locale.ROOT, "queue: %,d writes acknowledged, %,d entries taken, acknowledged writes "
                     + "lost: %d, entries taken twice: %d%n", written, takenList.size(), lost, duplicates);
+            lostOnes.stream().limit(20).forEach(line -> System.out.println("  lost: " + line));
             System.out.printf(Locale.ROOT, "monitors: %,d notifications, gaps signalled (subscription ended "
                     + "OVERFLOWED, subscribed again): %d, silent gaps: %d %s%n", notifications.sum(),
                     gapsSignalled.sum(), silentGaps.sum(), silentGapDetails.isEmpty() ? ""
@@ -601,12 +609,30 @@ public final class ClusterKillSoak {
         return longest;
     }
 
+    /** A lost write: which writer, when it was acknowledged against the kill before it, whether its neighbours came. */
+    private static String describeLost(long value, Set<Long> taken) {
+        long at = acknowledgedAt.getOrDefault(value, 0L);
+        long sinceKill = -1;
+        int kill = 0;
+        for (int i = 0; i < killedAtMillis.size(); i++) {
+            if (killedAtMillis.get(i) <= at) {
+                sinceKill = at - killedAtMillis.get(i);
+                kill = i + 1;
+            }
+        }
+        return String.format(Locale.ROOT, "writer %d, write %d, acknowledged %tT.%<tL (%s); previous %s, next %s",
+                value / 1_000_000_000L, value % 1_000_000_000L, at,
+                kill == 0 ? "before the first kill" : sinceKill + " ms after kill " + kill,
+                taken.contains(value - 1) ? "taken" : "not taken", taken.contains(value + 1) ? "taken" : "not taken");
+    }
+
     private static void write(Capi client, ContainerRef queue, int writer, Set<Long> acknowledged) {
         for (long i = 1; running.get(); i++) {
             long value = writer * 1_000_000_000L + i;
             try {
                 client.write(queue, Timeout.TRY_ONCE, Entry.of(value));
                 acknowledged.add(value);
+                acknowledgedAt.put(value, System.currentTimeMillis());
             } catch (SpaceException e) {
                 // outcome unknown: not counted as acknowledged (it may still be there)
             }

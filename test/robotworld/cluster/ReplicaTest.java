@@ -115,7 +115,7 @@ class ReplicaTest {
             case 15 -> ContainerCall.receipt(ContainerCall.Kind.RESTORE_RECEIPT, call, "client:" + random.nextInt(30));
             case 16 -> ContainerCall.receipt(ContainerCall.Kind.TAKE_COMPLETED, call, "client:" + random.nextInt(30));
             case 17 -> ContainerCall.receipt(ContainerCall.Kind.FORBID, call, "client:" + random.nextInt(30));
-            case 18 -> ContainerCall.sweep();
+            case 18 -> ContainerCall.sweep(random.nextInt(4) == 0 ? Set.of(MEMBER_B) : Set.of());
             case 8 -> waiters.isEmpty() ? ContainerCall.describe()
                     : ContainerCall.about(ContainerCall.Kind.COLLECT, call, pick(random, waiters));
             case 9 -> waiters.isEmpty() ? ContainerCall.describe()
@@ -262,6 +262,23 @@ class ReplicaTest {
         Outcome read = pair.run(ContainerCall.retrieve(ContainerCall.Kind.READ, next(MEMBER_A),
                 new Selector[] {Selector.key("answer")}, 0));
         assertEquals(List.of(Entry.of(7)), read.entries);
+    }
+
+    @Test
+    void aTakeOfADepartedMemberThatArrivesAfterItWasForgottenIsForgottenByTheNextSweep() {
+        Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO), 8));
+        pair.run(ContainerCall.forgetMembers(Set.of(MEMBER_A))); // B left: the oldest member forgot it
+        OpId late = next(MEMBER_B); // sent by B just before it died, run by the owner only now
+        assertEquals(Outcome.Status.QUEUED, pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, late,
+                new Selector[0], -1)).status);
+        pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(7))), 0));
+        assertEquals(0, pair.owner.contents().size(), "served to the late take, which nobody will collect");
+
+        pair.run(ContainerCall.sweep(Set.of(MEMBER_B)));
+        assertEquals(1, pair.owner.contents().size(), "the entry is back at once, not after minutes");
+        assertEquals(state(pair.owner), state(pair.backup));
+        assertEquals(List.of(Entry.of(7)), pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE,
+                next(MEMBER_A), new Selector[0], 0)).entries, "and a live member takes it");
     }
 
     @Test

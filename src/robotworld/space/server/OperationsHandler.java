@@ -22,8 +22,8 @@ import robotworld.space.wire.WireReader;
  * a cancel). An engine whose calls may block (a cluster's cross the network) gets each request on a pool thread
  * instead. The request's body has already arrived when this runs (an {@code EagerContentHandler} in front), so a
  * slow sender holds no thread. Because nothing here blocks, Jetty runs it on the thread that read the request,
- * without a hand-off; the other requests ({@code GET <path>}, the notification streams) go to the servlet on a
- * pool thread.
+ * without a hand-off; the other requests ({@code GET <path>}, {@code GET <path>/health}, the notification streams)
+ * go to the servlet on a pool thread.
  *
  * <p>Every request is authenticated (when a token is set), size-checked, and parsed strictly; every failure is a
  * JSON error answer with a 4xx or 5xx status. See {@code docs/wire.md}.
@@ -36,6 +36,7 @@ final class OperationsHandler extends Handler.Wrapper {
     private final SpaceOperations operations;
     private final String prefix;
     private final String eventsPath;
+    private final String healthPath;
 
     OperationsHandler(ServerState state, Handler servlets) {
         super(servlets);
@@ -43,6 +44,7 @@ final class OperationsHandler extends Handler.Wrapper {
         this.operations = new SpaceOperations(state);
         this.prefix = state.options.path() + "/";
         this.eventsPath = state.options.path() + "/events";
+        this.healthPath = state.options.path() + "/health";
     }
 
     @Override
@@ -60,7 +62,8 @@ final class OperationsHandler extends Handler.Wrapper {
             return true;
         }
         String path = request.getHttpURI().getPath();
-        if (path == null || !path.startsWith(prefix) || path.equals(eventsPath) || path.length() == prefix.length()) {
+        if (path == null || !path.startsWith(prefix) || path.equals(eventsPath) || path.equals(healthPath)
+                || path.length() == prefix.length()) {
             // the servlet may block (the notification stream does): never on this thread
             getServer().getThreadPool().execute(() -> {
                 try {

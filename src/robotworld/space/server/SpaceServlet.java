@@ -49,6 +49,9 @@ final class SpaceServlet extends HttpServlet {
             if (path == null || path.equals("/")) {
                 requireMethod(request, response, "GET");
                 hello(response);
+            } else if (path.equals("/health")) {
+                requireMethod(request, response, "GET");
+                health(response);
             } else if (path.equals("/events")) {
                 requireMethod(request, response, "GET");
                 events(request, response);
@@ -90,7 +93,23 @@ final class SpaceServlet extends HttpServlet {
                     .field("lease", state.options.leaseMillis())
                     .field("maxBodyBytes", state.wire.limits().maxBodyBytes())
                     .field("maxDepth", state.wire.limits().maxDepth())
-                    .field("maxCount", state.wire.limits().maxCount());
+                    .field("maxCount", state.wire.limits().maxCount())
+                    .endObject();
+        }
+        send(response, 200, body);
+    }
+
+    // ---- GET <path>/health ----
+
+    /**
+     * For operators: the space this server serves and, for a cluster, how its member sees it. Apart from the
+     * description above, since asking the cluster whether every backup is in place can take a while (it asks every
+     * member), and clients describe the server whenever they connect.
+     */
+    private void health(HttpServletResponse response) throws IOException {
+        ByteArrayOutputStream body = new ByteArrayOutputStream(128);
+        try (WireWriter out = state.wire.writer(body)) {
+            out.startObject().field("space", state.crefUri.toString());
             Optional<ClusterHealth> cluster = state.space.clusterHealth();
             if (cluster.isPresent()) { // only a clustered space has members to count
                 out.field("cluster").startObject()
