@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
+import java.util.function.Predicate;
 
 import robotworld.space.Entry;
 import robotworld.space.InvalidOperationException;
@@ -422,7 +423,7 @@ final class ContainerRules {
      * Forgets members that left the cluster: their queued operations and subscriptions go, and what was served to
      * them but never collected is undone (a take's entries return), since no thread is left to receive it.
      */
-    Outcome forgetMembers(java.util.function.Predicate<UUID> live) {
+    Outcome forgetMembers(Predicate<UUID> live) {
         boolean changed = false;
         for (WaiterRecord waiter : List.copyOf(record.waiters())) {
             if (waiter.kind() != WaiterRecord.Kind.RESTORE && !live.test(waiter.id().member())) {

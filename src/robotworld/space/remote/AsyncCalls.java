@@ -123,8 +123,7 @@ final class AsyncCalls implements Runnable {
             if (candidate.endpoint() == owner.endpoint()) {
                 return candidate;
             }
-            IdleChannel elsewhere = candidate;
-            execute(() -> closeQuietly(elsewhere.channel())); // its key belongs to the I/O thread
+            closeQuietly(candidate.channel()); // closing cancels its key: safe from any thread
         }
         return null;
     }
