@@ -1,9 +1,11 @@
 package robotworld.cluster;
 
 import java.util.Objects;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 
 import com.hazelcast.cluster.Address;
+import com.hazelcast.cluster.Member;
 import com.hazelcast.core.Hazelcast;
 import com.hazelcast.core.HazelcastInstance;
 
@@ -105,8 +107,8 @@ public final class ClusterMember implements AutoCloseable {
     /** Whether this member holds the primary copy of {@code container} (for tests that crash its owner). */
     boolean owns(ContainerRef container) {
         // a member that has not yet received the partition table knows no owner: wait for it
-        long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
-        com.hazelcast.cluster.Member owner;
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        Member owner;
         while ((owner = hazelcast.getPartitionService().getPartition(container.id()).getOwner()) == null) {
             if (System.nanoTime() - deadline > 0) {
                 throw new IllegalStateException("no owner known for " + container + " after 10 s");

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.net.URI;
 import java.util.ArrayList;
 import java.util.EnumSet;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.UUID;
@@ -294,5 +295,25 @@ final class Codec {
     static UUID readUuid(ObjectDataInput in) throws IOException {
         long most = in.readLong();
         return new UUID(most, in.readLong());
+    }
+
+    static void writeUuids(ObjectDataOutput out, Set<UUID> uuids) throws IOException {
+        out.writeInt(uuids.size());
+        for (UUID uuid : uuids) {
+            writeUuid(out, uuid);
+        }
+    }
+
+    /** A set written by {@link #writeUuids}; the empty one is immutable. */
+    static Set<UUID> readUuids(ObjectDataInput in) throws IOException {
+        int count = in.readInt();
+        if (count == 0) {
+            return Set.of();
+        }
+        Set<UUID> uuids = new HashSet<>(count * 2);
+        for (int i = 0; i < count; i++) {
+            uuids.add(readUuid(in));
+        }
+        return uuids;
     }
 }

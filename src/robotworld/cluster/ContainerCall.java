@@ -3,7 +3,6 @@ package robotworld.cluster;
 import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -343,14 +342,8 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             waiter.write(out);
         }
         out.writeLong(after);
-        out.writeInt(live.size());
-        for (UUID member : live) {
-            Codec.writeUuid(out, member);
-        }
-        out.writeInt(departed.size());
-        for (UUID member : departed) {
-            Codec.writeUuid(out, member);
-        }
+        Codec.writeUuids(out, live);
+        Codec.writeUuids(out, departed);
         Codec.writePlacedList(out, restoring);
         out.writeString(client);
         out.writeInt(clients.size());
@@ -377,20 +370,8 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             }
         }
         after = in.readLong();
-        int liveCount = in.readInt();
-        if (liveCount > 0) {
-            live = new HashSet<>();
-            for (int i = 0; i < liveCount; i++) {
-                live.add(Codec.readUuid(in));
-            }
-        }
-        int departedCount = in.readInt();
-        if (departedCount > 0) {
-            departed = new HashSet<>();
-            for (int i = 0; i < departedCount; i++) {
-                departed.add(Codec.readUuid(in));
-            }
-        }
+        live = Codec.readUuids(in);
+        departed = Codec.readUuids(in);
         restoring = Codec.readPlacedList(in);
         client = in.readString();
         int clientCount = in.readInt();

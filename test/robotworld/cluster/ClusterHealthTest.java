@@ -6,14 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.net.URI;
-import java.net.http.HttpClient;
-import java.net.http.HttpRequest;
-import java.net.http.HttpResponse;
 import java.time.Duration;
 import java.util.function.Predicate;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 
 import org.junit.jupiter.api.Test;
 
@@ -25,9 +21,6 @@ import robotworld.space.server.SpaceServer;
  * partition has its backups in place, i.e. whether taking down another member is safe now.
  */
 class ClusterHealthTest {
-
-    private static final ObjectMapper JSON = new ObjectMapper();
-    private static final HttpClient HTTP = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
 
     @Test
     void aClusteredServerSaysHowManyMembersItSeesAndWhetherTheirBackupsAreInPlace() throws Exception {
@@ -78,10 +71,6 @@ class ClusterHealthTest {
     }
 
     private static JsonNode get(URI server) throws Exception {
-        HttpResponse<String> response = HTTP.send(HttpRequest.newBuilder(URI.create(server + "/health"))
-                .timeout(Duration.ofSeconds(10))
-                .GET().build(), HttpResponse.BodyHandlers.ofString());
-        assertEquals(200, response.statusCode(), response.body());
-        return JSON.readTree(response.body());
+        return HealthProbe.read(server, Duration.ofSeconds(10));
     }
 }

@@ -5,9 +5,6 @@ import java.io.IOException;
 import java.io.InputStreamReader;
 import java.lang.management.ManagementFactory;
 import java.net.URI;
-import java.net.http.HttpClient;
-import java.net.http.HttpRequest;
-import java.net.http.HttpResponse;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -34,7 +31,6 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 
 import robotworld.core.IRDistanceModule;
 import robotworld.space.Capi;
@@ -196,8 +192,6 @@ public final class ClusterKillSoak {
      * before taking down the next computer; prints how long that took when it was not at once.
      */
     private static void awaitWholeAndSafe(List<Member> members) throws Exception {
-        HttpClient http = HttpClient.newBuilder()
-                .connectTimeout(Duration.ofSeconds(2)).build();
         long start = System.nanoTime();
         long deadline = start + TimeUnit.SECONDS.toNanos(120);
         List<String> last = new ArrayList<>();
@@ -205,11 +199,8 @@ public final class ClusterKillSoak {
             last.clear();
             for (Member member : members) {
                 try {
-                    String body = http.send(HttpRequest.newBuilder(URI.create(member.url + "/health"))
-                            .timeout(Duration.ofSeconds(10)).GET().build(),
-                            HttpResponse.BodyHandlers.ofString()).body();
-                    JsonNode cluster = JSON
-                            .readTree(body).path("cluster");
+                    JsonNode cluster = HealthProbe.read(URI.create(member.url), Duration.ofSeconds(10))
+                            .path("cluster");
                     if (cluster.path("members").asInt() != members.size()
                             || !cluster.path("backupsInPlace").asBoolean()) {
                         last.add(member.url + " " + cluster);
@@ -232,8 +223,6 @@ public final class ClusterKillSoak {
             Thread.sleep(200);
         }
     }
-
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     /**
      * {@code -Dbench.dumpAfterKillMillis=1000,1500}: thread dumps of the surviving members at those times after each
