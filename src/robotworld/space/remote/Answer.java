@@ -35,6 +35,8 @@ final class Answer {
     String message;
     String space;
     long maxWait = -1;
+    /** The frame version the server speaks besides HTTP (0: none). */
+    long frames;
 
     static Answer parse(WireContext wire, byte[] body) {
         Answer answer = new Answer();
@@ -61,6 +63,7 @@ final class Answer {
                     case "message" -> answer.message = in.readString("message");
                     case "space" -> answer.space = in.readString("space");
                     case "maxWait" -> answer.maxWait = in.readLong("maxWait");
+                    case "frames" -> answer.frames = in.readLong("frames");
                     default -> in.skipValue();
                 }
             }

@@ -18,6 +18,8 @@ final class ConnectionPool {
     private final ConcurrentLinkedDeque<HttpConnection> idle = new ConcurrentLinkedDeque<>();
     private final Set<HttpConnection> inUse = ConcurrentHashMap.newKeySet();
     private volatile boolean closed;
+    /** Whether new connections carry operations as frames (the server said it takes them). */
+    private volatile boolean framed;
 
     ConnectionPool(Endpoint endpoint, int connectTimeoutMillis, int maxIdle) {
         this.endpoint = endpoint;
@@ -36,7 +38,45 @@ final class ConnectionPool {
         HttpConnection connection = idle.pollFirst(); // most recently used first: least likely to be stale
         if (connection == null) {
             connection = new HttpConnection(endpoint.host(), endpoint.port(), connectTimeout(deadline));
+            if (framed) {
+                upgrade(connection, deadline);
+            }
         }
+        return track(connection);
+    }
+
+    /** As {@link #borrow}, a connection for any HTTP request (an idle framed one is not). */
+    HttpConnection borrowHttp(long deadline) throws IOException {
+        HttpConnection connection = idle.pollFirst();
+        if (connection != null && connection.framed) {
+            idle.addFirst(connection);
+            connection = null;
+        }
+        if (connection == null) {
+            connection = new HttpConnection(endpoint.host(), endpoint.port(), connectTimeout(deadline));
+        }
+        return track(connection);
+    }
+
+    /** From now on, new connections carry operations as frames (the idle HTTP ones are closed). */
+    void useFrames() {
+        framed = true;
+        discardIdle();
+    }
+
+    /** Makes a new connection a framed one; a server that does not take frames is not asked again. */
+    private void upgrade(HttpConnection connection, long deadline) throws IOException {
+        try {
+            if (!connection.upgradeToFrames(endpoint, deadline)) {
+                framed = false;
+            }
+        } catch (IOException | RuntimeException e) {
+            connection.close();
+            throw e;
+        }
+    }
+
+    private HttpConnection track(HttpConnection connection) throws IOException {
         inUse.add(connection);
         if (closed) {
             discard(connection);

@@ -2,8 +2,11 @@ package robotworld.space.remote;
 
 import java.net.URI;
 
-/** Where a space server is: host, port and base path of its URL, plus the authorization header to send. */
-record Endpoint(URI url, String host, int port, String basePath, String authorization) {
+/**
+ * Where a space server is: host, port and base path of its URL, plus its access token (or null) and the
+ * authorization header line that carries it over HTTP (or "").
+ */
+record Endpoint(URI url, String host, int port, String basePath, String token, String authorization) {
 
     static Endpoint of(URI url, String token) {
         if (!"http".equalsIgnoreCase(url.getScheme())) {
@@ -22,7 +25,7 @@ record Endpoint(URI url, String host, int port, String basePath, String authoriz
             host = host.substring(1, host.length() - 1);
         }
         String authorization = token == null ? "" : "Authorization: Bearer " + token + "\r\n";
-        return new Endpoint(url, host, port, path, authorization);
+        return new Endpoint(url, host, port, path, token, authorization);
     }
 
     /** The request path of an operation. */

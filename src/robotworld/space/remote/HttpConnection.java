@@ -9,13 +9,19 @@ import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
+
+import robotworld.space.wire.Frames;
+import robotworld.space.wire.Wire;
 
 /**
  * One keep-alive HTTP/1.1 connection, used by one thread at a time: writes a request in a single write and reads
  * the answer (Content-Length or chunked) on the calling thread, with no thread hand-off, which is what keeps a
- * remote call close to the raw round trip. Also reads a streaming (chunked) answer line by line.
+ * remote call close to the raw round trip. Also reads a streaming (chunked) answer line by line. A <em>framed</em>
+ * connection carries operation requests as frames instead ({@link Frames}): the same bodies without the HTTP
+ * request line and headers, which the server no longer has to parse.
  *
  * <p>Reads wait in slices so a waiting call can notice its thread's interrupt (and the connection being closed
  * from another thread) without making the socket unusable. A slice starts at 25 ms and doubles, up to 400 ms, while
@@ -40,6 +46,8 @@ final class HttpConnection implements Closeable {
     private int slice = SLICE_MILLIS;
     /** Whether this connection has completed an exchange before (a stale keep-alive connection fails at once). */
     boolean reused;
+    /** Whether operations go as frames (after {@link #upgradeToFrames}); such a connection carries nothing else. */
+    boolean framed;
 
     HttpConnection(String host, int port, int connectTimeoutMillis) throws IOException {
         socket = new Socket();
@@ -62,6 +70,55 @@ final class HttpConnection implements Closeable {
     interface Abort {
         /** @throws IOException (typically {@link InterruptedIOException}) to stop */
         void check() throws IOException;
+    }
+
+    /**
+     * Sends an operation request: a frame on a framed connection, else {@code POST <path>/<operation>} with the
+     * token and the take confirmations ({@code acks}, or null) as headers.
+     */
+    void sendOperation(Endpoint to, String operation, String acks, byte[] body, int bodyLength) throws IOException {
+        if (!framed) {
+            send("POST", to.path(operation), acks == null ? to.authorization()
+                    : to.authorization() + Wire.ACK_HEADER + ": " + acks + "\r\n", body, bodyLength);
+            return;
+        }
+        byte[] name = operation.getBytes(StandardCharsets.US_ASCII);
+        byte[] token = to.token() == null ? new byte[0] : to.token().getBytes(StandardCharsets.UTF_8);
+        byte[] ackBytes = acks == null ? new byte[0] : acks.getBytes(StandardCharsets.US_ASCII);
+        if (ackBytes.length > Frames.MAX_ACKS_BYTES || token.length > Frames.MAX_TOKEN_BYTES || name.length > 255) {
+            throw new IllegalArgumentException("a request frame's fields are too long");
+        }
+        int length = 1 + name.length + 2 + token.length + 2 + ackBytes.length + bodyLength;
+        ByteBuffer frame = ByteBuffer.allocate(4 + length);
+        frame.putInt(length).put((byte) name.length).put(name).putShort((short) token.length).put(token)
+                .putShort((short) ackBytes.length).put(ackBytes).put(body, 0, bodyLength);
+        out.write(frame.array());
+        out.flush();
+    }
+
+    /**
+     * Asks the server to carry operations on this connection as frames, with an HTTP/1.1 upgrade of
+     * {@code GET <path>}.
+     *
+     * @return whether it did (101); otherwise the server answered the {@code GET} and the connection stays HTTP
+     */
+    boolean upgradeToFrames(Endpoint to, long deadline) throws IOException {
+        send("GET", to.basePath(), "Connection: Upgrade\r\nUpgrade: " + Frames.PROTOCOL + "\r\n"
+                + to.authorization(), null, 0);
+        Head head = readHead(deadline, () -> { });
+        if (head.status == 101) {
+            framed = true;
+            return true;
+        }
+        if (head.chunked) {
+            readChunkedBody(deadline, () -> { });
+        } else {
+            readExactly(Math.max(0, head.contentLength), deadline, () -> { });
+        }
+        if (head.close) {
+            close();
+        }
+        return false;
     }
 
     /** Sends a request; {@code headers} are extra lines, each ending in CRLF. */
@@ -91,6 +148,9 @@ final class HttpConnection implements Closeable {
      */
     Response receive(long deadline, Abort abort) throws IOException {
         shortSlices();
+        if (framed) {
+            return receiveFrame(deadline, abort);
+        }
         Head head = readHead(deadline, abort);
         byte[] body;
         if (head.chunked) {
@@ -105,6 +165,28 @@ final class HttpConnection implements Closeable {
         }
         reused = true;
         return new Response(head.status, body);
+    }
+
+    private Response receiveFrame(long deadline, Abort abort) throws IOException {
+        while (end - start < 7) {
+            fill(deadline, abort);
+        }
+        if (buffer[start] == 'H' && buffer[start + 1] == 'T' && buffer[start + 2] == 'T' && buffer[start + 3] == 'P') {
+            throw new IOException("the server answered a frame in HTTP: it does not take frames");
+        }
+        int length = ByteBuffer.wrap(buffer, start, 4).getInt();
+        if (length < 3) {
+            throw new IOException("not an answer frame (length " + Integer.toUnsignedString(length) + ")");
+        }
+        int status = ((buffer[start + 4] & 0xff) << 8) | (buffer[start + 5] & 0xff);
+        int flags = buffer[start + 6];
+        start += 7;
+        byte[] body = readExactly(Integer.toUnsignedLong(length) - 3, deadline, abort);
+        if ((flags & Frames.CLOSING) != 0) {
+            close();
+        }
+        reused = true;
+        return new Response(status, body);
     }
 
     /** Reads the head of a streaming answer; the body then comes through {@link #readLine}. */

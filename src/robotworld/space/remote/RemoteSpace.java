@@ -281,7 +281,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         HttpConnection connection = null;
         try {
             connection = new HttpConnection(server.host(), server.port(), pool.connectTimeout(deadline));
-            connection.send("POST", server.path("lookup"), headers(server, null), request, request.length);
+            connection.sendOperation(server, "lookup", null, request, request.length);
             HttpConnection.Response response = connection.receive(deadline, () -> { });
             if (response.status() == 200) {
                 return true;
@@ -776,7 +776,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             }
             try {
                 connection = pool.borrow(infinite ? readDeadline : Math.min(readDeadline, networkDeadline));
-                connection.send("POST", used.path(operation), headers(used, ackHeader), request, request.length);
+                connection.sendOperation(used, operation, ackHeader, request, request.length);
                 sent = true;
                 HttpConnection.Response response = connection.receive(readDeadline, waits ? RemoteSpace::checkInterrupt
                         : () -> { });
@@ -958,7 +958,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         Endpoint used = endpoint;
         try {
             connection = new HttpConnection(used.host(), used.port(), pool.connectTimeout(deadline));
-            connection.send("POST", used.path(operation), headers(used, ackHeader), request, request.length);
+            connection.sendOperation(used, operation, ackHeader, request, request.length);
             HttpConnection.Response response = connection.receive(grace ? Math.max(deadline,
                     System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(100)) : deadline, () -> { });
             if (response.status() != 200) {
@@ -994,7 +994,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         try {
             connection = pool.borrow(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()));
             byte[] body = {'{', '}'};
-            connection.send("POST", used.path("ack"), headers(used, header), body, body.length);
+            connection.sendOperation(used, "ack", header, body, body.length);
             HttpConnection.Response response = connection.receive(System.nanoTime()
                     + TimeUnit.MILLISECONDS.toNanos(options.networkAllowanceMillis()), () -> { });
             pool.release(connection);
@@ -1027,7 +1027,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             ConnectionPool pool = this.pool;
             HttpConnection connection = null;
             try {
-                connection = pool.borrow(deadline);
+                connection = pool.borrowHttp(deadline); // the description is an HTTP request, never a frame
                 connection.send("GET", used.basePath(), used.authorization(), null, 0);
                 HttpConnection.Response response = connection.receive(deadline, () -> { });
                 pool.release(connection);
@@ -1041,6 +1041,10 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 spaceUri = URI.create(answer.space);
                 if (answer.maxWait > 0) {
                     serverMaxWaitMillis = answer.maxWait;
+                }
+                if (answer.frames >= 1 && options.frames()) {
+                    // the servers of one space run the same version: all of them take frames
+                    pools.forEach(ConnectionPool::useFrames);
                 }
                 return;
             } catch (IOException e) {
@@ -1183,9 +1187,11 @@ public final class RemoteSpace implements Capi, AsyncTakes {
      * @param notificationQueue      undelivered notifications each subscription may queue before it overflows
      * @param maxIdleConnections     keep-alive connections kept open for reuse
      * @param ackDelayMicros         how long a take's confirmation may wait for another request to ride on
+     * @param frames                 whether operations go as frames to a server that offers them (the same
+     *                               requests without HTTP's request line and headers); false: always HTTP
      */
     public record Options(String token, long networkAllowanceMillis, int connectTimeoutMillis, int notificationQueue,
-                          int maxIdleConnections, long ackDelayMicros) {
+                          int maxIdleConnections, long ackDelayMicros, boolean frames) {
 
         /** Validates the values. */
         public Options {
@@ -1198,46 +1204,53 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         /**
          * No token, 3 s network allowance, 1 s connect timeout, 10 000 queued notifications, 32 idle connections,
          * and take confirmations sent alone after 20 ms without another request (they usually ride on the next one;
-         * a shorter delay wakes a timer thread on every take, which costs more than it saves).
+         * a shorter delay wakes a timer thread on every take, which costs more than it saves), operations as frames
+         * where the server offers them.
          */
         public static Options defaults() {
-            return new Options(null, 3_000, 1_000, 10_000, 32, 20_000);
+            return new Options(null, 3_000, 1_000, 10_000, 32, 20_000, true);
         }
 
         /** With a bearer token. */
         public Options token(String newToken) {
             return new Options(newToken, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
-                    maxIdleConnections, ackDelayMicros);
+                    maxIdleConnections, ackDelayMicros, frames);
         }
 
         /** With another network allowance. */
         public Options networkAllowanceMillis(long millis) {
             return new Options(token, millis, connectTimeoutMillis, notificationQueue, maxIdleConnections,
-                    ackDelayMicros);
+                    ackDelayMicros, frames);
         }
 
         /** With another per-subscription notification queue. */
         public Options notificationQueue(int capacity) {
             return new Options(token, networkAllowanceMillis, connectTimeoutMillis, capacity, maxIdleConnections,
-                    ackDelayMicros);
+                    ackDelayMicros, frames);
         }
 
         /** With another connect timeout. */
         public Options connectTimeoutMillis(int millis) {
             return new Options(token, networkAllowanceMillis, millis, notificationQueue, maxIdleConnections,
-                    ackDelayMicros);
+                    ackDelayMicros, frames);
         }
 
         /** With another number of idle keep-alive connections. */
         public Options maxIdleConnections(int connections) {
             return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue, connections,
-                    ackDelayMicros);
+                    ackDelayMicros, frames);
+        }
+
+        /** With operations as frames where the server offers them (true), or always as HTTP requests (false). */
+        public Options frames(boolean useFrames) {
+            return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
+                    maxIdleConnections, ackDelayMicros, useFrames);
         }
 
         /** With another delay before a take's confirmation is sent on its own. */
         public Options ackDelayMicros(long micros) {
             return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
-                    maxIdleConnections, micros);
+                    maxIdleConnections, micros, frames);
         }
     }
 }

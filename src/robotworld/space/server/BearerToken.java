@@ -20,6 +20,11 @@ final class BearerToken {
         this.expected = (PREFIX + token).getBytes(StandardCharsets.UTF_8);
     }
 
+    /** Whether {@code token} (sent without the header's "Bearer ", as in a request frame) is the token. */
+    boolean acceptsToken(String token) {
+        return accepts(PREFIX + token);
+    }
+
     /** Whether an {@code Authorization} header value (possibly null) carries the token. */
     boolean accepts(String authorization) {
         if (authorization == null) {

@@ -81,7 +81,12 @@ final class ClientLimits implements Connection.Listener {
      * the limit), or null if it may go on.
      */
     String arrived(Request request) {
-        Tracked tracked = connections.get(request.getConnectionMetaData().getConnection());
+        return arrived(request.getConnectionMetaData().getConnection(), hasToken(request));
+    }
+
+    /** As {@link #arrived(Request)}, for a request on {@code connection}; {@code withToken}: it has the server's token. */
+    String arrived(Connection connection, boolean withToken) {
+        Tracked tracked = connections.get(connection);
         if (tracked == null) {
             return null;
         }
@@ -91,7 +96,7 @@ final class ClientLimits implements Connection.Listener {
             if (!tracked.overCap) {
                 return null;
             }
-            if (hasToken(request)) {
+            if (withToken) {
                 tracked.overCap = false; // a client with the token is not limited per address
                 tracked.connection.getEndPoint().setIdleTimeout(tracked.idleTimeout);
                 return null;
@@ -103,7 +108,12 @@ final class ClientLimits implements Connection.Listener {
 
     /** The address whose waiting operations count against its limit: null for a request with the server's token. */
     InetAddress waitingClient(Request request) {
-        return hasToken(request) ? null : addressOf(request.getConnectionMetaData().getRemoteSocketAddress());
+        return waitingClient(request.getConnectionMetaData().getRemoteSocketAddress(), hasToken(request));
+    }
+
+    /** As {@link #waitingClient(Request)}, for a request from {@code address}. */
+    InetAddress waitingClient(SocketAddress address, boolean withToken) {
+        return withToken ? null : addressOf(address);
     }
 
     /** Takes a waiting place of {@code client}'s address (null: not limited); false if it has none left. */

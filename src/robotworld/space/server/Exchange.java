@@ -4,40 +4,31 @@ import java.io.ByteArrayOutputStream;
 import java.io.UncheckedIOException;
 import java.net.InetAddress;
 import java.lang.System.Logger.Level;
-import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicBoolean;
 
-import org.eclipse.jetty.http.HttpHeader;
-import org.eclipse.jetty.server.Response;
-import org.eclipse.jetty.util.Callback;
-
-import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireContext;
 import robotworld.space.wire.WireError;
 import robotworld.space.wire.WireFormatException;
 import robotworld.space.wire.WireWriter;
 
 /**
- * One operation request and its answer. The answer may be sent from any thread: the request's own, or, for an
- * operation that waited, whichever thread completed it (the one that wrote the awaited entry, the space's timer,
- * a cancel). Sending never blocks: the bytes are handed to Jetty, which writes them when the connection can take
- * them. The first answer wins; later ones are ignored.
+ * One operation request and its answer, whatever carried it (an HTTP request, {@link HttpExchange}, or a frame,
+ * {@link FrameExchange}). The answer may be sent from any thread: the request's own, or, for an operation that
+ * waited, whichever thread completed it (the one that wrote the awaited entry, the space's timer, a cancel).
+ * Sending never blocks: the bytes are handed to Jetty, which writes them when the connection can take them. The
+ * first answer wins; later ones are ignored.
  */
-final class Exchange {
+abstract class Exchange {
 
     private static final System.Logger LOG = System.getLogger(Exchange.class.getName());
     private static final int MAX_MESSAGE_CHARS = 300;
 
-    private final Response response;
-    private final Callback callback;
     private final WireContext wire;
     private final AtomicBoolean answered = new AtomicBoolean();
     /** The address whose waiting places this request uses, or null (a request with the token). */
     private final InetAddress client;
 
-    Exchange(Response response, Callback callback, WireContext wire, InetAddress client) {
-        this.response = response;
-        this.callback = callback;
+    Exchange(WireContext wire, InetAddress client) {
         this.wire = wire;
         this.client = client;
     }
@@ -56,12 +47,7 @@ final class Exchange {
     void answer(Body body) {
         body.out.endObject();
         body.out.close();
-        send(200, body.bytes);
-    }
-
-    /** Adds a header to the answer (before it is sent). */
-    void header(HttpHeader name, String value) {
-        response.getHeaders().put(name, value);
+        send(200, body.bytes, false);
     }
 
     /** Answers with the error that {@code failure} stands for. */
@@ -72,7 +58,7 @@ final class Exchange {
             fail(WireError.BAD_REQUEST, e.getMessage(), false);
         } else if (failure instanceof UncheckedIOException e) {
             if (answered.compareAndSet(false, true)) {
-                callback.failed(e.getCause());
+                abandon(e.getCause());
             }
         } else {
             WireError kind = WireError.of(failure);
@@ -93,29 +79,31 @@ final class Exchange {
             }
             out.endObject();
         }
-        if (kind == WireError.BUSY || kind == WireError.STOPPING) {
-            response.getHeaders().put(HttpHeader.RETRY_AFTER, "1");
-        }
-        send(kind.status(), bytes);
+        send(kind.status(), bytes, kind == WireError.BUSY || kind == WireError.STOPPING);
     }
 
-    private void send(int status, ByteArrayOutputStream body) {
+    private void send(int status, ByteArrayOutputStream body, boolean retryLater) {
         if (!answered.compareAndSet(false, true)) {
             return;
         }
+        // the client may be gone: an unconfirmed take then comes back when its lease runs out
         try {
-            response.setStatus(status);
-            response.getHeaders().put(HttpHeader.CONTENT_TYPE, Wire.MEDIA_TYPE);
-            response.getHeaders().put(HttpHeader.CONTENT_LENGTH, body.size());
-            // the client may be gone: an unconfirmed take then comes back when its lease runs out
-            ByteBuffer bytes = ByteBuffer.wrap(body.toByteArray());
-            // once written, the connection reads on here rather than on a woken pool thread
-            ResumeInPlace.answering(() -> response.write(true, bytes, callback));
+            transmit(status, body.toByteArray(), retryLater);
         } catch (RuntimeException e) {
             LOG.log(Level.DEBUG, "cannot answer a space request: " + e);
-            callback.failed(e);
+            abandon(e);
         }
     }
+
+    /**
+     * Hands the answer to the connection, without blocking (called once).
+     *
+     * @param retryLater the client should wait a second before asking again (busy, stopping)
+     */
+    abstract void transmit(int status, byte[] body, boolean retryLater);
+
+    /** The answer cannot be sent: the connection is given up (called at most once, instead of transmit). */
+    abstract void abandon(Throwable cause);
 
     static String truncate(String text, int max) {
         if (text == null) {

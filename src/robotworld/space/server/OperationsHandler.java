@@ -13,7 +13,6 @@ import org.eclipse.jetty.util.thread.Invocable;
 
 import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireError;
-import robotworld.space.wire.WireReader;
 
 /**
  * {@code POST <path>/<operation>}: runs one operation of the wire protocol, as a Jetty core handler that never
@@ -29,8 +28,6 @@ import robotworld.space.wire.WireReader;
  * JSON error answer with a 4xx or 5xx status. See {@code docs/wire.md}.
  */
 final class OperationsHandler extends Handler.Wrapper {
-
-    private static final int MAX_ACKS_PER_REQUEST = 1024;
 
     private final ServerState state;
     private final SpaceOperations operations;
@@ -56,7 +53,7 @@ final class OperationsHandler extends Handler.Wrapper {
     public boolean handle(Request request, Response response, Callback callback) throws Exception {
         String refused = state.clients.arrived(request);
         if (refused != null) {
-            Exchange exchange = new Exchange(response, callback, state.wire, null);
+            HttpExchange exchange = new HttpExchange(response, callback, state.wire, null);
             exchange.header(HttpHeader.CONNECTION, "close");
             exchange.fail(WireError.BUSY, refused, false);
             return true;
@@ -87,7 +84,8 @@ final class OperationsHandler extends Handler.Wrapper {
 
     /** Runs one operation request; answers it (at once, or later from the thread that completes it). */
     private void operate(String path, Request request, Response response, Callback callback) {
-        Exchange exchange = new Exchange(response, callback, state.wire, state.clients.waitingClient(request));
+        HttpExchange exchange = new HttpExchange(response, callback, state.wire,
+                state.clients.waitingClient(request));
         try {
             if (state.token != null && !state.token.accepts(request.getHeaders().get(HttpHeader.AUTHORIZATION))) {
                 exchange.header(HttpHeader.WWW_AUTHENTICATE, "Bearer realm=\"space\"");
@@ -124,27 +122,13 @@ final class OperationsHandler extends Handler.Wrapper {
                     if (declared >= 0 && body.length < declared) {
                         throw new ErrorAnswer(WireError.BAD_REQUEST, "the body is shorter than its Content-Length");
                     }
-                    run(name, body, acks, exchange);
+                    operations.perform(name, body, acks, exchange);
                 } catch (RuntimeException e) {
                     exchange.fail(e);
                 }
             }));
         } catch (RuntimeException e) {
             exchange.fail(e);
-        }
-    }
-
-    private void run(String name, byte[] body, String acks, Exchange exchange) {
-        acknowledge(acks);
-        if (state.stopping && !name.equals("ack") && !name.equals("cancel")) {
-            throw new ErrorAnswer(WireError.STOPPING, "the server is stopping; the operation had no effect");
-        }
-        RequestFields fields;
-        try (WireReader in = state.wire.reader(body, 0, body.length)) {
-            fields = RequestFields.parse(in, MAX_ACKS_PER_REQUEST);
-        }
-        if (!operations.run(name, fields, exchange)) {
-            throw new ErrorAnswer(WireError.NO_SUCH_ENDPOINT, "no operation '" + Exchange.truncate(name, 40) + "'");
         }
     }
 
@@ -155,24 +139,5 @@ final class OperationsHandler extends Handler.Wrapper {
         int semicolon = contentType.indexOf(';');
         String type = (semicolon < 0 ? contentType : contentType.substring(0, semicolon)).trim();
         return type.equalsIgnoreCase(Wire.MEDIA_TYPE);
-    }
-
-    /** Acknowledgements of earlier takes ride on any request, as a header of comma-separated call ids. */
-    private void acknowledge(String header) {
-        if (header == null || header.isEmpty()) {
-            return;
-        }
-        java.util.List<String> ids = new java.util.ArrayList<>();
-        for (String token : header.split(",")) {
-            if (ids.size() >= MAX_ACKS_PER_REQUEST) {
-                throw new ErrorAnswer(WireError.BAD_REQUEST, "more than " + MAX_ACKS_PER_REQUEST + " acks in one request");
-            }
-            String[] reference = RequestFields.callReference(token.trim(), Wire.ACK_HEADER);
-            if (reference[1] != null) {
-                state.receipts.hint(reference[0], reference[1]);
-            }
-            ids.add(reference[0]);
-        }
-        state.receipts.acknowledge(ids);
     }
 }

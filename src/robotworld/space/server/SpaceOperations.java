@@ -1,6 +1,7 @@
 package robotworld.space.server;
 
 import java.net.InetAddress;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
@@ -15,7 +16,9 @@ import robotworld.space.SpaceException;
 import robotworld.space.SpaceTimeoutException;
 import robotworld.space.Subscription;
 import robotworld.space.Timeout;
+import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireError;
+import robotworld.space.wire.WireReader;
 import robotworld.space.wire.WireWriter;
 
 /**
@@ -28,10 +31,50 @@ import robotworld.space.wire.WireWriter;
  */
 final class SpaceOperations {
 
+    private static final int MAX_ACKS_PER_REQUEST = 1024;
+
     private final ServerState state;
 
     SpaceOperations(ServerState state) {
         this.state = state;
+    }
+
+    /**
+     * Runs one operation request: {@code acks} (take confirmations riding on it, comma-separated call ids, or null)
+     * first, then operation {@code name} with its JSON {@code body}, answered through {@code exchange}. Failures
+     * known at once are thrown.
+     */
+    void perform(String name, byte[] body, String acks, Exchange exchange) {
+        acknowledge(acks);
+        if (state.stopping && !name.equals("ack") && !name.equals("cancel")) {
+            throw new ErrorAnswer(WireError.STOPPING, "the server is stopping; the operation had no effect");
+        }
+        RequestFields fields;
+        try (WireReader in = state.wire.reader(body, 0, body.length)) {
+            fields = RequestFields.parse(in, MAX_ACKS_PER_REQUEST);
+        }
+        if (!run(name, fields, exchange)) {
+            throw new ErrorAnswer(WireError.NO_SUCH_ENDPOINT, "no operation '" + Exchange.truncate(name, 40) + "'");
+        }
+    }
+
+    /** Acknowledgements of earlier takes ride on any request (an HTTP header, a frame field): comma-separated call ids. */
+    private void acknowledge(String header) {
+        if (header == null || header.isEmpty()) {
+            return;
+        }
+        List<String> ids = new ArrayList<>();
+        for (String token : header.split(",")) {
+            if (ids.size() >= MAX_ACKS_PER_REQUEST) {
+                throw new ErrorAnswer(WireError.BAD_REQUEST, "more than " + MAX_ACKS_PER_REQUEST + " acks in one request");
+            }
+            String[] reference = RequestFields.callReference(token.trim(), Wire.ACK_HEADER);
+            if (reference[1] != null) {
+                state.receipts.hint(reference[0], reference[1]);
+            }
+            ids.add(reference[0]);
+        }
+        state.receipts.acknowledge(ids);
     }
 
     /**
@@ -68,7 +111,8 @@ final class SpaceOperations {
             case "describe" -> describe(in, out);
             case "shift" -> shift(in, out);
             case "ack" -> {
-                List<String> calls = in.required(in.calls, "calls");
+                // the confirmations may all have come in the Space-Ack header (a client's background flush)
+                List<String> calls = in.calls == null ? List.of() : in.calls;
                 for (int i = 0; i < calls.size(); i++) {
                     hint(calls.get(i), in.callContainers.get(i));
                 }

@@ -94,8 +94,10 @@ public final class SpaceServer implements AutoCloseable {
         boolean ownsSpace = space == null;
         // a connection answered from another thread reads on, on that thread, when the engine never blocks
         Executor connections = ownsSpace || !space.callsMayBlock() ? new ResumeInPlace(threads) : threads;
+        // operation requests come as HTTP or, on connections upgraded to it, as frames
+        FrameProtocol frames = new FrameProtocol();
         ServerConnector connector = new ServerConnector(jetty, connections, null, null, 1, selectors,
-                new HttpConnectionFactory(http));
+                new HttpConnectionFactory(http), frames);
         connector.setHost(options.bindAddress());
         connector.setPort(options.port());
         connector.setAcceptQueueSize(1024); // a provider starting a thousand modules connects all at once
@@ -117,6 +119,7 @@ public final class SpaceServer implements AutoCloseable {
         URI crefUri = served.sharedUri() ? served.spaceUri() : publicUri;
         WireContext wire = WireContext.of(options.limits(), CrefMapping.between(served.spaceUri(), crefUri));
         ServerState state = new ServerState(served, publicUri, wire, options, clients);
+        frames.serve(state);
         if (!ownsSpace) {
             state.sessions.adopt(ParkedSessions.adopt(served)); // left by a server that stopped gracefully
         }
@@ -168,6 +171,18 @@ public final class SpaceServer implements AutoCloseable {
             }
         }
         return host.contains(":") ? "[" + host + "]" : host;
+    }
+
+    /** The kinds of the connections open now (Jetty's class names: HTTP, frames, detection), for tests. */
+    java.util.List<String> connectionKinds() {
+        java.util.List<String> kinds = new java.util.ArrayList<>();
+        for (org.eclipse.jetty.server.Connector connector : jetty.getConnectors()) {
+            for (org.eclipse.jetty.io.EndPoint endPoint : connector.getConnectedEndPoints()) {
+                org.eclipse.jetty.io.Connection connection = endPoint.getConnection();
+                kinds.add(connection == null ? "none" : connection.getClass().getSimpleName());
+            }
+        }
+        return kinds;
     }
 
     /** The URL clients open, e.g. {@code http://127.0.0.1:9876/space}; also the space URI in crefs on the wire. */

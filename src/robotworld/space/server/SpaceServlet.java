@@ -94,6 +94,7 @@ final class SpaceServlet extends HttpServlet {
                     .field("maxBodyBytes", state.wire.limits().maxBodyBytes())
                     .field("maxDepth", state.wire.limits().maxDepth())
                     .field("maxCount", state.wire.limits().maxCount())
+                    .field("frames", 1) // the frame version this server also speaks on its port
                     .endObject();
         }
         send(response, 200, body);

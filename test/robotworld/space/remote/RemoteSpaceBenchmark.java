@@ -53,6 +53,9 @@ public final class RemoteSpaceBenchmark {
     private static final int PAIRS = Integer.getInteger("bench.pairs", 50);
     private static final long PAIR_MILLIS = Long.getLong("bench.pairMillis", 5_000);
 
+    /** Clients that send operations as HTTP requests, as before frames: the step measured beside them. */
+    private static final RemoteSpace.Options HTTP = RemoteSpace.Options.defaults().frames(false);
+
     private RemoteSpaceBenchmark() {
     }
 
@@ -88,6 +91,8 @@ public final class RemoteSpaceBenchmark {
             Row call = measure("request/answer cycle of a remote module call (A 1, B 1)", echo,
                     () -> requestAnswerCycles(uri, true));
             rows.add(call);
+            rows.add(measure("the same, operations as HTTP requests instead of frames", echo,
+                    () -> requestAnswerCycles(uri, true, HTTP)));
             rows.add(measure("module-call cycle, B waiting without a thread (shiftThenTakeLater)", echo,
                     () -> threadlessModuleCycles(uri)));
             Row redisCall = redis == null ? null : measure("Redis request/answer cycle (A: RPUSH+BLPOP; B: BLPOP, RPUSH)",
@@ -175,7 +180,13 @@ public final class RemoteSpaceBenchmark {
      * request of its own, each take sent once the write or shift before it is answered.
      */
     private static long[] requestAnswerCycles(URI uri, boolean composite) throws Exception {
-        try (RemoteSpace a = RemoteSpace.open(uri); RemoteSpace b = RemoteSpace.open(uri)) {
+        return requestAnswerCycles(uri, composite, RemoteSpace.Options.defaults());
+    }
+
+    /** As above, with clients of {@code options} (operations as HTTP requests instead of frames, say). */
+    private static long[] requestAnswerCycles(URI uri, boolean composite, RemoteSpace.Options options)
+            throws Exception {
+        try (RemoteSpace a = RemoteSpace.open(uri, options); RemoteSpace b = RemoteSpace.open(uri, options)) {
             String suffix = Long.toString(System.nanoTime());
             ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQUEST" + suffix));
             ContainerRef answers = a.createContainer(ContainerSpec.of(Order.LIFO).withKeyView().named("ANSWER" + suffix));
@@ -440,17 +451,21 @@ public final class RemoteSpaceBenchmark {
      * their own, doing the module-call cycle as fast as answers come; ours and Redis alternately, 3 runs each.
      */
     private static void concurrentPairs(URI uri, RedisPeer redis, int warmUpRuns) throws Exception {
-        System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours and Redis"
-                + " alternately:%n", PAIRS, PAIR_MILLIS);
+        System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours (frames,"
+                + " then HTTP) and Redis alternately:%n", PAIRS, PAIR_MILLIS);
         List<double[]> ours = new ArrayList<>();
+        List<double[]> oursHttp = new ArrayList<>();
         List<double[]> theirs = new ArrayList<>();
         for (int run = -warmUpRuns; run < 3; run++) { // the runs before 0 warm up
-            double[] space = pairsRun(uri, null);
-            double[] redisRun = redis == null ? null : pairsRun(uri, redis);
+            double[] space = pairsRun(uri, null, RemoteSpace.Options.defaults());
+            double[] spaceHttp = pairsRun(uri, null, HTTP);
+            double[] redisRun = redis == null ? null : pairsRun(uri, redis, null);
             if (run >= 0) {
                 ours.add(space);
-                System.out.printf("  run %d: space %,.0f calls/s, p50 %.0f us, p99 %.0f us", run + 1, space[0],
-                        space[1], space[2]);
+                oursHttp.add(spaceHttp);
+                System.out.printf("  run %d: space %,.0f calls/s, p50 %.0f us, p99 %.0f us; over HTTP %,.0f calls/s,"
+                        + " p50 %.0f us, p99 %.0f us", run + 1, space[0], space[1], space[2], spaceHttp[0],
+                        spaceHttp[1], spaceHttp[2]);
                 if (redisRun != null) {
                     theirs.add(redisRun);
                     System.out.printf("; Redis %,.0f calls/s, p50 %.0f us, p99 %.0f us", redisRun[0], redisRun[1],
@@ -461,6 +476,9 @@ public final class RemoteSpaceBenchmark {
         }
         double[] space = medians(ours);
         System.out.printf("  median: space %,.0f calls/s, p50 %.0f us, p99 %.0f us%n", space[0], space[1], space[2]);
+        double[] http = medians(oursHttp);
+        System.out.printf("  median: space over HTTP %,.0f calls/s, p50 %.0f us, p99 %.0f us (frames: %.2f x its"
+                + " calls/s)%n", http[0], http[1], http[2], space[0] / http[0]);
         if (!theirs.isEmpty()) {
             double[] r = medians(theirs);
             System.out.printf("  median: Redis %,.0f calls/s, p50 %.0f us, p99 %.0f us%n", r[0], r[1], r[2]);
@@ -470,8 +488,11 @@ public final class RemoteSpaceBenchmark {
         }
     }
 
-    /** One run of {@link #PAIRS} pairs: {calls/s, p50 us, p99 us}; with Redis when {@code redis} is given. */
-    private static double[] pairsRun(URI uri, RedisPeer redis) throws Exception {
+    /**
+     * One run of {@link #PAIRS} pairs: {calls/s, p50 us, p99 us}; with Redis when {@code redis} is given, else with
+     * space clients of {@code options}.
+     */
+    private static double[] pairsRun(URI uri, RedisPeer redis, RemoteSpace.Options options) throws Exception {
         String suffix = Long.toString(System.nanoTime());
         List<AutoCloseable> resources = new ArrayList<>();
         long[][] perCaller = new long[PAIRS][];
@@ -484,8 +505,8 @@ public final class RemoteSpaceBenchmark {
                 int pair = p;
                 Runnable caller;
                 if (redis == null) {
-                    RemoteSpace a = RemoteSpace.open(uri);
-                    RemoteSpace b = RemoteSpace.open(uri);
+                    RemoteSpace a = RemoteSpace.open(uri, options);
+                    RemoteSpace b = RemoteSpace.open(uri, options);
                     resources.add(a);
                     resources.add(b);
                     ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQ" + suffix + p));
