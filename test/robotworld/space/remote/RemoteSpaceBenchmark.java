@@ -632,6 +632,7 @@ public final class RemoteSpaceBenchmark {
             writeTakeCycles(uri);
             requestAnswerCycles(uri, false);
             requestAnswerCycles(uri, true);
+            requestAnswerCycles(uri, true, HTTP); // both paths warm: the HTTP one is measured too
             threadlessModuleCycles(uri);
             notificationLatencies(uri);
         }
