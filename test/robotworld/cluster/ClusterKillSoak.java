@@ -45,6 +45,7 @@ import robotworld.space.Operation;
 import robotworld.space.Order;
 import robotworld.space.Selector;
 import robotworld.space.SpaceException;
+import robotworld.space.SpaceTimeoutException;
 import robotworld.space.SubscriptionEnd;
 import robotworld.space.Timeout;
 import robotworld.space.remote.RemoteSpace;
@@ -270,6 +271,11 @@ public final class ClusterKillSoak {
     private static final List<ConcurrentLinkedQueue<Long>> answered = new ArrayList<>();
     /** When each write was acknowledged (wall clock, to match the member logs), for the report of lost ones. */
     private static final Map<Long, Long> acknowledgedAt = new ConcurrentHashMap<>();
+    /** What the takers' failed calls said, with when: read against the lost writes' times. */
+    private static final ConcurrentLinkedQueue<TakerFailure> takerFailures = new ConcurrentLinkedQueue<>();
+
+    private record TakerFailure(long at, String thread, String what) {
+    }
     /** When each kill was made (wall clock). */
     private static final List<Long> killedAtMillis = new java.util.concurrent.CopyOnWriteArrayList<>();
     /** When calls of each module were answered: shows whether a slow return is one module's or everyone's. */
@@ -466,6 +472,7 @@ public final class ClusterKillSoak {
             System.out.printf(Locale.ROOT, "queue: %,d writes acknowledged, %,d entries taken, acknowledged writes "
                     + "lost: %d, entries taken twice: %d%n", written, takenList.size(), lost, duplicates);
             lostOnes.stream().limit(20).forEach(line -> System.out.println("  lost: " + line));
+            printTakerFailuresAround(acknowledged, takenSet);
             System.out.printf(Locale.ROOT, "monitors: %,d notifications, gaps signalled (subscription ended "
                     + "OVERFLOWED, subscribed again): %d, silent gaps: %d %s%n", notifications.sum(),
                     gapsSignalled.sum(), silentGaps.sum(), silentGapDetails.isEmpty() ? ""
@@ -625,6 +632,30 @@ public final class ClusterKillSoak {
         }
     }
 
+    /** The takers' failed calls from 2 s before the first lost write was acknowledged to 15 s after the last. */
+    private static void printTakerFailuresAround(List<Set<Long>> acknowledged, Set<Long> taken) {
+        long first = Long.MAX_VALUE;
+        long last = Long.MIN_VALUE;
+        for (Set<Long> mine : acknowledged) {
+            for (Long value : mine) {
+                Long at = acknowledgedAt.get(value);
+                if (!taken.contains(value) && at != null) {
+                    first = Math.min(first, at);
+                    last = Math.max(last, at);
+                }
+            }
+        }
+        if (first == Long.MAX_VALUE) {
+            return;
+        }
+        for (TakerFailure failure : takerFailures) {
+            if (failure.at() >= first - 2_000 && failure.at() <= last + 15_000) {
+                System.out.printf(Locale.ROOT, "  taker failure %tT.%<tL %s: %s%n", failure.at(), failure.thread(),
+                        failure.what());
+            }
+        }
+    }
+
     /** A lost write: which writer, when it was acknowledged against the kill before it, whether its neighbours came. */
     private static String describeLost(long value, Set<Long> taken) {
         long at = acknowledgedAt.getOrDefault(value, 0L);
@@ -662,8 +693,13 @@ public final class ClusterKillSoak {
                 for (Entry entry : client.take(queue, Timeout.ofMillis(1_000), Selector.fifo(5))) {
                     taken.add(((IntEntry) entry).value());
                 }
+            } catch (SpaceTimeoutException e) {
+                // nothing there yet
             } catch (SpaceException e) {
-                // nothing there yet, or the server moves: what a lost take held comes back after its lease
+                // the server moves: what a lost take held comes back after its lease
+                takerFailures.add(new TakerFailure(System.currentTimeMillis(), Thread.currentThread().getName(),
+                        e.getClass().getSimpleName() + ": " + e.getMessage()
+                        + (e.getCause() == null ? "" : " (" + e.getCause() + ")")));
             }
         }
     }
