@@ -32,6 +32,12 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
 
     private enum State { WAITING, BUSY, FINISHED }
 
+    /**
+     * For tests: runs between registering a waiter and sending its queuing call, the window in which a wake-up
+     * (a member leaving) used to queue an operation twice.
+     */
+    static volatile Runnable whileQueuing;
+
     private final ClusterSpace space;
     private final String container;
     private final ContainerRef ref;
@@ -71,11 +77,17 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
      */
     SpaceEngine.Pending start() {
         space.track(this);
+        synchronized (this) {
+            // a wake-up during the queuing call (a member leaving wakes every waiter) must wait for it: looking
+            // before the container has the operation finds it unknown and would queue it a second time under the
+            // same client call, and the container would then hold two removals for one call id
+            state = State.BUSY;
+        }
         Outcome outcome;
         try {
             outcome = queue();
         } catch (RuntimeException e) {
-            space.untrack(this);
+            end();
             throw e;
         }
         if (outcome.status != Outcome.Status.QUEUED) {
@@ -83,15 +95,12 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
             return SpaceEngine.Pending.DONE;
         }
         synchronized (this) {
-            if (state == State.FINISHED) {
-                return this; // a wake-up came first and collected the result
-            }
             if (deadline != Long.MAX_VALUE) {
                 expiry = space.node().schedule(() -> giveUp(new SpaceTimeoutException("timed out after " + timeout
                         + " on " + ref)), Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
             }
-            scheduleLook();
         }
+        rest(); // waits; looks at once if a wake-up (or a give-up) came during the queuing call
         return this;
     }
 
@@ -101,6 +110,10 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
         LocalWaiter registered = space.node().register(new LocalWaiter(call, this::woken));
         synchronized (this) {
             waiter = registered;
+        }
+        Runnable testHook = whileQueuing;
+        if (testHook != null) {
+            testHook.run();
         }
         long waitMillis = timeout.isInfinite() ? -1
                 : Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));

@@ -543,10 +543,15 @@ final class ClusterNode {
         if (isOldest()) {
             forgetDeparted();
         }
+        wakeWaiters();
+        checkInboxes();
+    }
+
+    /** Every waiting operation of this member looks at where it stands. */
+    void wakeWaiters() {
         for (LocalWaiter waiter : waiters.values()) {
             waiter.wake();
         }
-        checkInboxes();
     }
 
     /**
