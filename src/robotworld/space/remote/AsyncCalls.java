@@ -27,6 +27,7 @@ import robotworld.space.SpaceException;
 import robotworld.space.SpaceTimeoutException;
 import robotworld.space.SpaceUnavailableException;
 import robotworld.space.Timeout;
+import robotworld.space.wire.Frames;
 import robotworld.space.wire.WireError;
 
 /**
@@ -112,8 +113,8 @@ final class AsyncCalls implements Runnable {
         });
     }
 
-    /** An idle connection and the server it goes to. */
-    private record IdleChannel(SocketChannel channel, Endpoint endpoint) {
+    /** An idle connection, the server it goes to, and whether it carries frames. */
+    private record IdleChannel(SocketChannel channel, Endpoint endpoint, boolean framed) {
     }
 
     /** The most recently used idle connection to the client's current server, closing any to other servers. */
@@ -217,6 +218,12 @@ final class AsyncCalls implements Runnable {
         private SelectionKey key;
         private ByteBuffer out;
         private ByteBuffer in = ByteBuffer.allocate(4096);
+        /** The request body of this attempt (its bytes on the wire depend on the connection). */
+        private byte[] body;
+        /** This call's connection carries frames. */
+        private boolean framed;
+        /** Its answer starts with the 101 of the upgrade to frames sent before the request. */
+        private boolean awaitingUpgrade;
         private long ioDeadline;
         /** How long the answer may take once the request is out: the server's wait plus the network allowance. */
         private long answerNanos;
@@ -262,6 +269,7 @@ final class AsyncCalls implements Runnable {
                 if (reused) {
                     channel = reusable.channel();
                     connectedTo = reusable.endpoint();
+                    encode(reusable.framed(), false);
                 } else {
                     channel = SocketChannel.open();
                     channel.configureBlocking(false);
@@ -269,6 +277,8 @@ final class AsyncCalls implements Runnable {
                     channel.setOption(StandardSocketOptions.SO_KEEPALIVE, true);
                     Endpoint endpoint = owner.endpoint();
                     connectedTo = endpoint;
+                    boolean frames = owner.framesOffered();
+                    encode(frames, frames); // the upgrade and the first frame in one write
                     if (!channel.connect(new InetSocketAddress(endpoint.host(), endpoint.port()))) {
                         key = channel.register(selector, SelectionKey.OP_CONNECT, this);
                         ioDeadline = Math.min(ioDeadline,
@@ -304,6 +314,7 @@ final class AsyncCalls implements Runnable {
             prepare(System.nanoTime());
             channel = idleChannel;
             connectedTo = reusable.endpoint();
+            encode(reusable.framed(), false);
             key = idleKey;
             reused = true;
             active.add(this);
@@ -337,15 +348,33 @@ final class AsyncCalls implements Runnable {
             if (composite) {
                 owner.waiting(takeRef, true);
             }
-            byte[] body = request.encode(callId, wait);
+            body = request.encode(callId, wait);
             ackHeader = owner.acks().drain();
-            out = ByteBuffer.wrap(owner.requestBytes(request.operation(), ackHeader, body));
             in.clear();
             sent = false;
             long serverWait = wait.isInfinite() ? owner.serverMaxWaitMillis
                     : Math.min(wait.millis(), owner.serverMaxWaitMillis);
             answerNanos = TimeUnit.MILLISECONDS.toNanos(serverWait + owner.options.networkAllowanceMillis());
             ioDeadline = now + answerNanos;
+        }
+
+        /**
+         * The bytes of the request for the chosen connection: a frame or an HTTP request, after the upgrade request
+         * on a new connection that is to carry frames.
+         */
+        private void encode(boolean framedConnection, boolean upgrade) {
+            framed = framedConnection;
+            awaitingUpgrade = upgrade;
+            byte[] bytes = framed
+                    ? HttpConnection.operationFrame(connectedTo, request.operation(), ackHeader, body, body.length)
+                    : owner.requestBytes(request.operation(), ackHeader, body);
+            if (upgrade) {
+                byte[] head = HttpConnection.upgradeRequest(connectedTo);
+                byte[] both = java.util.Arrays.copyOf(head, head.length + bytes.length);
+                System.arraycopy(bytes, 0, both, head.length, bytes.length);
+                bytes = both;
+            }
+            out = ByteBuffer.wrap(bytes);
         }
 
         /** The connection is ready for what this call waits for. I/O thread. */
@@ -386,7 +415,11 @@ final class AsyncCalls implements Runnable {
             if (read < 0) {
                 throw new EOFException("the server closed the connection");
             }
-            HttpAnswer answer = HttpAnswer.parse(in.array(), in.position());
+            if (awaitingUpgrade && !upgraded()) {
+                return;
+            }
+            RawAnswer answer = framed ? RawAnswer.parseFrame(in.array(), in.position())
+                    : RawAnswer.parse(in.array(), in.position());
             if (answer == null) {
                 return; // not all there yet
             }
@@ -398,13 +431,45 @@ final class AsyncCalls implements Runnable {
                 closeQuietly(channel);
             } else {
                 key.interestOps(SelectionKey.OP_READ); // notices the server closing it while idle
-                idle.addFirst(new IdleChannel(channel, connectedTo));
+                idle.addFirst(new IdleChannel(channel, connectedTo, framed));
             }
             channel = null;
             answered(answer);
         }
 
-        private void answered(HttpAnswer http) {
+        /**
+         * Reads past the answer to the upgrade request: true once the 101 is read (its bytes dropped from the
+         * buffer), false while more bytes are needed. A server that did not switch answered the GET, and treats the
+         * frame after it as a broken HTTP request: the request never ran, so it goes again over HTTP, and this
+         * server is not asked for frames again.
+         */
+        private boolean upgraded() throws IOException {
+            byte[] data = in.array();
+            int length = in.position();
+            int headEnd = RawAnswer.headEnd(data, length);
+            if (headEnd < 0) {
+                if (length > 16 * 1024) {
+                    throw new IOException("answer head too long");
+                }
+                return false;
+            }
+            if (!new String(data, 0, Math.min(headEnd, 13), StandardCharsets.ISO_8859_1).equals("HTTP/1.1 101 ")) {
+                owner.framesRefused(connectedTo);
+                active.remove(this);
+                closeQuietly(channel);
+                channel = null;
+                owner.acks().requeue(ackHeader);
+                ackHeader = null;
+                send();
+                return false;
+            }
+            System.arraycopy(data, headEnd + 4, data, 0, length - headEnd - 4);
+            in.position(length - headEnd - 4);
+            awaitingUpgrade = false;
+            return true;
+        }
+
+        private void answered(RawAnswer http) {
             Answer answer;
             try {
                 answer = Answer.parse(owner.wire, http.body);
@@ -423,6 +488,8 @@ final class AsyncCalls implements Runnable {
                     finish(null, new robotworld.space.SpaceUnavailableException(
                             connectedTo != null ? connectedTo.url() : owner.url(), answer.message, null));
                 } else if (kind == WireError.STOPPING || kind == WireError.BUSY) {
+                    owner.acks().requeue(ackHeader); // refused as it arrived, its confirmations may be unread
+                    ackHeader = null;
                     if (answer.written) {
                         goOnWithTake();
                     } else {
@@ -598,18 +665,42 @@ final class AsyncCalls implements Runnable {
         }
     }
 
-    /** A complete HTTP answer parsed from the bytes read so far. */
-    record HttpAnswer(int status, byte[] body, boolean close) {
+    /** A complete answer, HTTP or frame, parsed from the bytes read so far. */
+    record RawAnswer(int status, byte[] body, boolean close) {
 
-        /** The answer in {@code data[0, length)}, or null if it is not complete yet. */
-        static HttpAnswer parse(byte[] data, int length) throws IOException {
-            int headEnd = -1;
+        /** Where the head in {@code data[0, length)} ends (its blank line), or -1. */
+        static int headEnd(byte[] data, int length) {
             for (int i = 0; i + 3 < length; i++) {
                 if (data[i] == '\r' && data[i + 1] == '\n' && data[i + 2] == '\r' && data[i + 3] == '\n') {
-                    headEnd = i;
-                    break;
+                    return i;
                 }
             }
+            return -1;
+        }
+
+        /** The answer frame in {@code data[0, length)}, or null if it is not complete yet. */
+        static RawAnswer parseFrame(byte[] data, int length) throws IOException {
+            if (length < 7) {
+                return null;
+            }
+            int size = ByteBuffer.wrap(data, 0, 4).getInt();
+            if (size < 3 || size > Integer.MAX_VALUE - 64) {
+                throw new IOException("not an answer frame (length " + Integer.toUnsignedString(size) + ")");
+            }
+            if (length - 4 < size) {
+                return null;
+            }
+            if (length - 4 > size) {
+                throw new IOException("more bytes than the answer");
+            }
+            int status = ((data[4] & 0xff) << 8) | (data[5] & 0xff);
+            boolean close = (data[6] & Frames.CLOSING) != 0;
+            return new RawAnswer(status, java.util.Arrays.copyOfRange(data, 7, length), close);
+        }
+
+        /** The HTTP answer in {@code data[0, length)}, or null if it is not complete yet. */
+        static RawAnswer parse(byte[] data, int length) throws IOException {
+            int headEnd = headEnd(data, length);
             if (headEnd < 0) {
                 if (length > 16 * 1024) {
                     throw new IOException("answer head too long");
@@ -655,7 +746,7 @@ final class AsyncCalls implements Runnable {
             }
             byte[] body = new byte[(int) contentLength];
             System.arraycopy(data, bodyStart, body, 0, body.length);
-            return new HttpAnswer(status, body, close);
+            return new RawAnswer(status, body, close);
         }
     }
 }

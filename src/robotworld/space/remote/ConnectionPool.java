@@ -58,6 +58,16 @@ final class ConnectionPool {
         return track(connection);
     }
 
+    /** Whether new connections carry operations as frames. */
+    boolean framed() {
+        return framed;
+    }
+
+    /** The server did not switch a connection to frames: it is not asked again. */
+    void noFrames() {
+        framed = false;
+    }
+
     /** From now on, new connections carry operations as frames (the idle HTTP ones are closed). */
     void useFrames() {
         framed = true;

@@ -28,6 +28,11 @@ record Endpoint(URI url, String host, int port, String basePath, String token, S
         return new Endpoint(url, host, port, path, token, authorization);
     }
 
+    /** The value of an HTTP Host header for this server. */
+    String hostHeader() {
+        return host.contains(":") ? "[" + host + "]:" + port : host + ":" + port;
+    }
+
     /** The request path of an operation. */
     String path(String operation) {
         return basePath + "/" + operation;

@@ -82,6 +82,12 @@ final class HttpConnection implements Closeable {
                     : to.authorization() + Wire.ACK_HEADER + ": " + acks + "\r\n", body, bodyLength);
             return;
         }
+        out.write(operationFrame(to, operation, acks, body, bodyLength));
+        out.flush();
+    }
+
+    /** An operation request as a frame ({@link Frames}). */
+    static byte[] operationFrame(Endpoint to, String operation, String acks, byte[] body, int bodyLength) {
         byte[] name = operation.getBytes(StandardCharsets.US_ASCII);
         byte[] token = to.token() == null ? new byte[0] : to.token().getBytes(StandardCharsets.UTF_8);
         byte[] ackBytes = acks == null ? new byte[0] : acks.getBytes(StandardCharsets.US_ASCII);
@@ -92,8 +98,14 @@ final class HttpConnection implements Closeable {
         ByteBuffer frame = ByteBuffer.allocate(4 + length);
         frame.putInt(length).put((byte) name.length).put(name).putShort((short) token.length).put(token)
                 .putShort((short) ackBytes.length).put(ackBytes).put(body, 0, bodyLength);
-        out.write(frame.array());
-        out.flush();
+        return frame.array();
+    }
+
+    /** The HTTP/1.1 request that asks {@code to} to carry operations on the connection as frames. */
+    static byte[] upgradeRequest(Endpoint to) {
+        return ("GET " + to.basePath() + " HTTP/1.1\r\nHost: " + to.hostHeader() + "\r\nConnection: Upgrade\r\n"
+                + "Upgrade: " + Frames.PROTOCOL + "\r\n" + to.authorization() + "\r\n")
+                .getBytes(StandardCharsets.ISO_8859_1);
     }
 
     /**
@@ -103,8 +115,8 @@ final class HttpConnection implements Closeable {
      * @return whether it did (101); otherwise the server answered the {@code GET} and the connection stays HTTP
      */
     boolean upgradeToFrames(Endpoint to, long deadline) throws IOException {
-        send("GET", to.basePath(), "Connection: Upgrade\r\nUpgrade: " + Frames.PROTOCOL + "\r\n"
-                + to.authorization(), null, 0);
+        out.write(upgradeRequest(to));
+        out.flush();
         Head head = readHead(deadline, () -> { });
         if (head.status == 101) {
             framed = true;

@@ -575,6 +575,19 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         return timer;
     }
 
+    /** Whether new connections to the current server carry operations as frames. */
+    boolean framesOffered() {
+        return pool.framed();
+    }
+
+    /** {@code server} answered an upgrade to frames as a plain GET: it is not asked for frames again. */
+    void framesRefused(Endpoint server) {
+        int index = endpoints.indexOf(server);
+        if (index >= 0) {
+            pools.get(index).noFrames();
+        }
+    }
+
     /** A complete HTTP request for {@code operation}, as one byte array. */
     byte[] requestBytes(String operation, String ackHeader, byte[] body) {
         String host = endpoint.host().contains(":") ? "[" + endpoint.host() + "]:" + endpoint.port()
@@ -789,6 +802,9 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                         throw new ServerUnavailable(answer.message);
                     }
                     if (kind == WireError.STOPPING || kind == WireError.BUSY) {
+                        // a request refused as it arrived had its confirmations unread: they go again (twice is
+                        // harmless, never is not: the takes would come back after their lease and be taken twice)
+                        acks.requeue(ackHeader);
                         if (kind == WireError.STOPPING) {
                             failover(used, true, "it is stopping"); // another server of the space (if any) goes on
                         }

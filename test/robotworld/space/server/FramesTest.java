@@ -240,4 +240,44 @@ class FramesTest {
             assertTrue(server.connectionKinds().contains("FrameConnection"), "connections: " + server.connectionKinds());
         }
     }
+
+    @Test
+    void takesWaitingWithoutAThreadGoAsFramesToo() throws Exception {
+        try (SpaceServer server = start(null); RemoteSpace client = RemoteSpace.open(server.uri())) {
+            ContainerRef queue = client.createContainer(ContainerSpec.of(Order.FIFO));
+            List<java.util.concurrent.CompletableFuture<Object>> outcomes = new java.util.ArrayList<>();
+            for (int i = 0; i < 3; i++) {
+                java.util.concurrent.CompletableFuture<Object> outcome = new java.util.concurrent.CompletableFuture<>();
+                outcomes.add(outcome);
+                client.takeLater(queue, Timeout.ofMillis(10_000), new robotworld.space.Selector[0],
+                        new robotworld.space.SpaceEngine.Completion<>() {
+                            @Override
+                            public void completed(List<Entry> entries) {
+                                outcome.complete(entries);
+                            }
+
+                            @Override
+                            public void failed(robotworld.space.SpaceException failure) {
+                                outcome.complete(failure);
+                            }
+                        });
+            }
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (client.describeContainer(queue).blocked() < 3 && System.nanoTime() < deadline) {
+                Thread.sleep(10);
+            }
+            long framedConnections = server.connectionKinds().stream().filter("FrameConnection"::equals).count();
+            assertTrue(framedConnections >= 3, "each waiting take on a framed connection: " + server.connectionKinds());
+            for (int i = 0; i < 3; i++) {
+                client.write(queue, Timeout.TRY_ONCE, Entry.of(i));
+            }
+            java.util.Set<Object> received = new java.util.HashSet<>();
+            for (java.util.concurrent.CompletableFuture<Object> outcome : outcomes) {
+                Object result = outcome.get(10, java.util.concurrent.TimeUnit.SECONDS);
+                assertTrue(result instanceof List<?>, "a take failed: " + result);
+                received.add(((List<?>) result).get(0));
+            }
+            assertEquals(java.util.Set.of(Entry.of(0), Entry.of(1), Entry.of(2)), received);
+        }
+    }
 }
