@@ -623,7 +623,7 @@ public final class RemoteSpaceBenchmark {
     }
 
     private static void warmUp(URI uri, TcpEcho echo, RedisPeer redis) throws Exception {
-        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.getLong("bench.warmupSeconds", 8));
+        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.getLong("bench.warmupSeconds", 15));
         while (System.nanoTime() < until) {
             tcpRoundTrips(echo);
             if (redis != null) {
