@@ -590,9 +590,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
     /** A complete HTTP request for {@code operation}, as one byte array. */
     byte[] requestBytes(String operation, String ackHeader, byte[] body) {
-        String host = endpoint.host().contains(":") ? "[" + endpoint.host() + "]:" + endpoint.port()
-                : endpoint.host() + ":" + endpoint.port();
-        byte[] head = ("POST " + endpoint.path(operation) + " HTTP/1.1\r\nHost: " + host
+        byte[] head = ("POST " + endpoint.path(operation) + " HTTP/1.1\r\nHost: " + endpoint.hostHeader()
                 + "\r\nContent-Type: application/json\r\nContent-Length: " + body.length + "\r\n"
                 + headers(ackHeader) + "\r\n").getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
         byte[] message = java.util.Arrays.copyOf(head, head.length + body.length);
