@@ -43,7 +43,7 @@ final class EventStream {
     /** The established ones, by server id on the current session. */
     private final Map<String, RemoteSubscription> byServerId = new HashMap<>();
     /** Frames for server ids whose subscribe answer has not been processed yet. */
-    private final Map<String, List<byte[]>> early = new HashMap<>();
+    private final Map<String, Parked> early = new HashMap<>();
     private final String sessionId = UUID.randomUUID().toString();
     private Thread reader;
     /** The current incarnation of the session ("id#epoch"), or null while no stream is connected. */
@@ -74,6 +74,9 @@ final class EventStream {
                 continue; // the stream is reconnecting: subscribe on the new one
             }
             subscription.completeUpTo = answer.sequence;
+            if (beforeRegistering != null) {
+                beforeRegistering.run();
+            }
             register(current, answer.subscription, subscription);
             subscription.established(owner.timer());
             return;
@@ -90,23 +93,58 @@ final class EventStream {
         }
     }
 
+    /**
+     * Makes {@code subscription} the receiver of {@code serverId}'s frames. Frames that came before it was
+     * registered are delivered first, and frames still coming meanwhile wait behind them, so the listener sees the
+     * container's order: the subscription becomes reachable by the reader only once nothing of it is parked.
+     */
     private void register(String usedSession, String serverId, RemoteSubscription subscription) {
-        List<byte[]> pending;
         synchronized (lock) {
             subscriptions.add(subscription);
-            if (!usedSession.equals(session)) {
-                resubscribeNeeded = true; // the session broke meanwhile: the reader re-establishes it
+        }
+        while (true) {
+            Parked parked;
+            synchronized (lock) {
+                if (!usedSession.equals(session)) {
+                    resubscribeNeeded = true; // the session broke meanwhile: the reader re-establishes it
+                    return;
+                }
+                parked = early.remove(serverId);
+                if (parked == null) {
+                    subscription.session = usedSession;
+                    subscription.serverId = serverId;
+                    byServerId.put(serverId, subscription);
+                    return;
+                }
+            }
+            if (beforeParkedFramesDelivered != null) {
+                beforeParkedFramesDelivered.run();
+            }
+            for (Frame frame : parked.frames) {
+                deliver(subscription, frame);
+                if (frame.end != null) {
+                    return; // ended on the server before the client knew it: nothing more will come
+                }
+            }
+            if (parked.overflowed) {
+                // frames were dropped while it waited: say so rather than go on, and stop the server sending
+                subscription.session = usedSession;
+                subscription.serverId = serverId;
+                subscription.overflowed();
                 return;
             }
-            subscription.session = usedSession;
-            subscription.serverId = serverId;
-            byServerId.put(serverId, subscription);
-            pending = early.remove(serverId);
         }
-        if (pending != null) {
-            for (byte[] frame : pending) {
-                dispatchEarly(frame);
-            }
+    }
+
+    /** Test hook: runs when a new subscription's answer is in and it is about to be registered. */
+    volatile Runnable beforeRegistering;
+    /** Test hook: runs when frames parked for a subscription are about to be delivered to it. */
+    volatile Runnable beforeParkedFramesDelivered;
+
+    /** The number of the last frame the reader processed (for tests). */
+    long lastFrameRead() {
+        synchronized (lock) {
+            return lastFrame;
         }
     }
 
@@ -318,16 +356,11 @@ final class EventStream {
 
     // ---- frames ----
 
-    /** A frame that arrived before its subscription was registered (its number was counted then). */
-    private void dispatchEarly(byte[] line) {
-        dispatch(line, false);
-    }
+    /** One frame of the stream: a notification ({@code operation} set), an end, or a heartbeat (no {@code sub}). */
+    private record Frame(String sub, long number, Operation operation, long sequence, List<Entry> entries,
+                         List<Entry> displaced, String end) { }
 
-    private void dispatch(byte[] line) {
-        dispatch(line, true);
-    }
-
-    private void dispatch(byte[] line, boolean fresh) {
+    private Frame parse(byte[] line) {
         String sub = null;
         Operation operation = null;
         long sequence = -1;
@@ -351,32 +384,66 @@ final class EventStream {
                 }
             }
         }
-        if (sub == null) {
+        return new Frame(sub, number, operation, sequence, entries, displaced, end);
+    }
+
+    /** A frame read from the stream (reader thread only). */
+    private void dispatch(byte[] line) {
+        Frame frame = parse(line);
+        if (frame.sub == null) {
             return; // heartbeat
         }
         RemoteSubscription subscription;
         synchronized (lock) {
-            if (number >= 0 && fresh) {
-                if (number <= lastFrame) {
+            if (frame.number >= 0) {
+                if (frame.number <= lastFrame) {
                     return; // sent again after a reconnect, but processed already
                 }
-                lastFrame = number;
+                lastFrame = frame.number;
             }
-            subscription = byServerId.get(sub);
+            subscription = byServerId.get(frame.sub);
             if (subscription == null) {
-                if (early.size() < 10_000) {
-                    early.computeIfAbsent(sub, key -> new ArrayList<>()).add(line);
-                }
+                park(frame); // its subscribe answer is still on the way (or it ended a moment ago)
                 return;
             }
-            if (end != null) {
-                byServerId.remove(sub);
+            if (frame.end != null) {
+                byServerId.remove(frame.sub);
             }
         }
-        if (operation != null) {
-            subscription.offer(new Notification(subscription.container, operation, entries, displaced, sequence));
-        } else if (end != null) {
-            end(subscription, Wire.subscriptionEnd(end));
+        deliver(subscription, frame);
+    }
+
+    /**
+     * Frames that came before their subscription's subscribe answer. Frames of a subscription that ended on the
+     * client while the server still sent are parked too and never claimed: they are dropped after a while.
+     */
+    private static final class Parked {
+        final long since = System.nanoTime();
+        final List<Frame> frames = new ArrayList<>();
+        boolean overflowed;
+    }
+
+    private static final int MAX_PARKED_FRAMES = 10_000;
+
+    /** Under the lock. */
+    private void park(Frame frame) {
+        long now = System.nanoTime();
+        long unclaimed = TimeUnit.MILLISECONDS.toNanos(60_000 + 2L * owner.options.networkAllowanceMillis());
+        early.values().removeIf(parked -> now - parked.since > unclaimed);
+        Parked parked = early.computeIfAbsent(frame.sub, key -> new Parked());
+        if (parked.frames.size() < MAX_PARKED_FRAMES) {
+            parked.frames.add(frame);
+        } else {
+            parked.overflowed = true;
+        }
+    }
+
+    private void deliver(RemoteSubscription subscription, Frame frame) {
+        if (frame.operation != null) {
+            subscription.offer(new Notification(subscription.container, frame.operation, frame.entries,
+                    frame.displaced, frame.sequence));
+        } else if (frame.end != null) {
+            end(subscription, Wire.subscriptionEnd(frame.end));
         }
     }
 

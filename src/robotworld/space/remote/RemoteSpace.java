@@ -103,7 +103,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     private final AckQueue acks;
     private final ScheduledExecutorService timer;
     final ExecutorService delivery;
-    private final EventStream events;
+    final EventStream events; // package-private for tests
     /** Prefix of this client's call ids: 64 random bits, short enough to keep ack headers small. */
     private final String clientId = Long.toHexString(new java.security.SecureRandom().nextLong());
     private final AtomicLong lastCall = new AtomicLong();

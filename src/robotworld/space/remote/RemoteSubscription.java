@@ -104,11 +104,16 @@ final class RemoteSubscription implements Subscription {
         lastFiredNanos = System.nanoTime();
         firings.incrementAndGet();
         if (!queue.offer(notification)) {
-            end(SubscriptionEnd.OVERFLOWED);
-            canceller.cancel(this);
+            overflowed();
             return;
         }
         scheduleDrain();
+    }
+
+    /** Notifications were dropped: the listener is told that events may be missing, and the server stops sending. */
+    void overflowed() {
+        end(SubscriptionEnd.OVERFLOWED);
+        canceller.cancel(this);
     }
 
     /** Ends the subscription (first reason wins); queued notifications are delivered first. */
