@@ -280,4 +280,54 @@ class FramesTest {
             assertEquals(java.util.Set.of(Entry.of(0), Entry.of(1), Entry.of(2)), received);
         }
     }
+
+    @Test
+    void behindAProxyThatDropsUpgradesAClientStaysOnHttpAndLosesNoCall() throws Exception {
+        try (SpaceServer server = start(null);
+             robotworld.testsupport.UpgradeStrippingProxy proxy =
+                     new robotworld.testsupport.UpgradeStrippingProxy(server.port())) {
+            URI served = server.uri();
+            URI proxied = new URI(served.getScheme(), null, served.getHost(), proxy.port(), served.getPath(), null,
+                    null);
+            try (RemoteSpace direct = RemoteSpace.open(server.uri(), RemoteSpace.Options.defaults().frames(false));
+                 RemoteSpace client = RemoteSpace.open(proxied)) {
+                ContainerRef queue = direct.createContainer(ContainerSpec.of(Order.FIFO));
+                // the client's first operation is a wait without a thread: it sends its upgrade and its first frame
+                // in one write; refused, the frame goes again over HTTP
+                java.util.concurrent.CompletableFuture<Object> later = new java.util.concurrent.CompletableFuture<>();
+                client.takeLater(queue, Timeout.ofMillis(10_000), new robotworld.space.Selector[0],
+                        new robotworld.space.SpaceEngine.Completion<>() {
+                            @Override
+                            public void completed(List<Entry> entries) {
+                                later.complete(entries);
+                            }
+
+                            @Override
+                            public void failed(robotworld.space.SpaceException failure) {
+                                later.complete(failure);
+                            }
+                        });
+                long deadline = System.nanoTime() + 10_000_000_000L;
+                while (direct.describeContainer(queue).blocked() < 1 && System.nanoTime() < deadline) {
+                    Thread.sleep(10);
+                }
+                assertEquals(1, direct.describeContainer(queue).blocked(), "the take waits on the server");
+                assertTrue(proxy.upgradesStripped() >= 1, "the take asked for frames");
+                for (int i = 0; i < 20; i++) {
+                    client.write(queue, Timeout.TRY_ONCE, Entry.of(i));
+                }
+                assertEquals(List.of(Entry.of(0)), later.get(10, java.util.concurrent.TimeUnit.SECONDS));
+                for (int i = 1; i < 20; i++) {
+                    assertEquals(List.of(Entry.of(i)), client.take(queue, Timeout.ofMillis(1_000),
+                            robotworld.space.Selector.fifo(1)), "each write once, in order");
+                }
+                org.junit.jupiter.api.Assertions.assertThrows(robotworld.space.SpaceTimeoutException.class,
+                        () -> client.take(queue, Timeout.TRY_ONCE, robotworld.space.Selector.fifo(1)),
+                        "nothing written twice");
+            }
+            assertTrue(proxy.upgradesStripped() <= 2, "and stopped asking once refused: " + proxy.upgradesStripped());
+            assertTrue(!server.connectionKinds().contains("FrameConnection"), "connections: "
+                    + server.connectionKinds());
+        }
+    }
 }
