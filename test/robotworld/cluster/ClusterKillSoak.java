@@ -297,6 +297,8 @@ public final class ClusterKillSoak {
     private static final LongAdder silentGaps = new LongAdder();
     private static final LongAdder notifications = new LongAdder();
     private static final List<String> silentGapDetails = Collections.synchronizedList(new ArrayList<>());
+    /** What each call past its bound ended with, and when it started relative to the kill before it. */
+    private static final List<String> pastBoundDetails = Collections.synchronizedList(new ArrayList<>());
 
     public static void main(String[] args) throws Exception {
         // log lines with milliseconds, to be read against the kill times printed below
@@ -463,6 +465,9 @@ public final class ClusterKillSoak {
                     + "allowance, + %d ms for the thread to run): %d; ended within %d ms after it: %d%n",
                     longestCall.get(), CALL_TIMEOUT.toSeconds(), ALLOWANCE_MILLIS / 1000, LATE_MILLIS,
                     pastBound.get(), LATE_MILLIS, atBound.get());
+            synchronized (pastBoundDetails) {
+                pastBoundDetails.stream().limit(10).forEach(detail -> System.out.println("  past its bound: " + detail));
+            }
             long[] back = resumes.stream().mapToLong(TimeUnit.NANOSECONDS::toMillis).sorted().toArray();
             System.out.printf(Locale.ROOT, "calls back to half their rate after a kill (ms): median %d, max %d, all"
                     + " %s%n", back[back.length / 2], back[back.length - 1], Arrays.toString(back));
@@ -513,6 +518,8 @@ public final class ClusterKillSoak {
             int module = ThreadLocalRandom.current().nextInt(modules.size());
             int sensor = 1 + ThreadLocalRandom.current().nextInt(IRDistanceModule.SENSORS);
             long started = System.nanoTime();
+            long startedAtMillis = System.currentTimeMillis();
+            String outcome = "answered";
             try {
                 int distance = modules.get(module).getSingleSensor(sensor);
                 if (distance != CallerSoak.NamedDistances.distance(module, sensor)) {
@@ -524,12 +531,23 @@ public final class ClusterKillSoak {
                 answeredByModule.get(module).add(now);
             } catch (RuntimeException e) {
                 failures.computeIfAbsent(e.getClass().getSimpleName(), k -> new LongAdder()).increment();
+                outcome = e.toString() + (e.getCause() == null ? "" : " <- " + e.getCause());
             }
             long millis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
             longestCall.accumulateAndGet(millis, Math::max);
             long bound = CALL_TIMEOUT.toMillis() + ALLOWANCE_MILLIS;
             if (millis > bound + LATE_MILLIS) {
                 pastBound.incrementAndGet();
+                long sinceKill = -1;
+                int kill = 0;
+                for (int k = 0; k < killedAtMillis.size(); k++) {
+                    if (killedAtMillis.get(k) <= startedAtMillis) {
+                        sinceKill = startedAtMillis - killedAtMillis.get(k);
+                        kill = k + 1;
+                    }
+                }
+                pastBoundDetails.add(String.format(Locale.ROOT, "%,d ms, module %d, started %,d ms after kill %d: %s",
+                        millis, module, sinceKill, kill, outcome));
             } else if (millis > bound) {
                 atBound.incrementAndGet();
             }
