@@ -150,7 +150,7 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
         if (look != null) {
             look.cancel(false);
         }
-        look = space.node().schedule(() -> space.node().runStep(this::look), TimeUnit.NANOSECONDS.toMillis(nap));
+        look = space.node().schedule(this::look, TimeUnit.NANOSECONDS.toMillis(nap)); // in the background
         nap = Math.min(nap * 2, ClusterNode.LONGEST_NAP_NANOS);
     }
 

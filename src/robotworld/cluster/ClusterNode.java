@@ -72,7 +72,16 @@ final class ClusterNode {
     private final ConcurrentMap<String, Long> staleChecks = new ConcurrentHashMap<>();
     /** Registration of this member's listener on its own topic. */
     private volatile UUID topicRegistration;
+    /**
+     * Timers only: every task it fires runs on {@link #maintenance}. Its threads never make a cluster call, because
+     * a call can block for seconds while the cluster recovers from a member's failure (the moment the timers are
+     * needed most): the waits' deadlines and looks would then fire late.
+     */
     private final ScheduledThreadPoolExecutor background;
+    /** Work in the background that calls the cluster: members leaving, sweeps, inbox repairs, timed-out waits. */
+    private final java.util.concurrent.ExecutorService maintenance;
+    private final java.util.concurrent.atomic.AtomicBoolean checkingInboxes = new java.util.concurrent.atomic.AtomicBoolean();
+    private final java.util.concurrent.atomic.AtomicBoolean sweepingReceipts = new java.util.concurrent.atomic.AtomicBoolean();
     /** Steps of operations that wait without a thread (collect a result, withdraw, queue again). */
     private final java.util.concurrent.ExecutorService steps;
     private final Delivery delivery;
@@ -91,6 +100,12 @@ final class ClusterNode {
             return thread;
         });
         background.setRemoveOnCancelPolicy(true);
+        AtomicInteger workThreads = new AtomicInteger();
+        this.maintenance = java.util.concurrent.Executors.newCachedThreadPool(task -> {
+            Thread thread = new Thread(task, "space-cluster-work-" + workThreads.incrementAndGet());
+            thread.setDaemon(true);
+            return thread;
+        });
         AtomicInteger stepThreads = new AtomicInteger();
         this.steps = java.util.concurrent.Executors.newCachedThreadPool(task -> {
             Thread thread = new Thread(task, "space-cluster-wait-" + stepThreads.incrementAndGet());
@@ -116,9 +131,10 @@ final class ClusterNode {
                 runInBackground(this::rejoined);
             }
         });
-        background.scheduleWithFixedDelay(this::checkInboxes, INBOX_CHECK_MILLIS, INBOX_CHECK_MILLIS,
-                TimeUnit.MILLISECONDS);
-        background.scheduleWithFixedDelay(this::sweepReceipts, SWEEP_MILLIS, SWEEP_MILLIS, TimeUnit.MILLISECONDS);
+        background.scheduleWithFixedDelay(() -> runUnlessRunning(checkingInboxes, this::checkInboxes),
+                INBOX_CHECK_MILLIS, INBOX_CHECK_MILLIS, TimeUnit.MILLISECONDS);
+        background.scheduleWithFixedDelay(() -> runUnlessRunning(sweepingReceipts, this::sweepReceipts),
+                SWEEP_MILLIS, SWEEP_MILLIS, TimeUnit.MILLISECONDS);
     }
 
     /** The node of a running member, or null. */
@@ -321,13 +337,16 @@ final class ClusterNode {
 
     // ---- effects: wake-ups and events for other members ----
 
+    /** For tests: wake-ups are not passed on, as when the member that served an operation died first. */
+    volatile boolean dropWakeUps;
+
     /** Passes a call's effects to the members concerned: wake-ups to waiting threads, events to subscriptions. */
     void dispatch(String space, String container, Outcome outcome) {
         if (!outcome.hasEffects()) {
             return;
         }
         Map<UUID, List<OpId>> wakes = new HashMap<>();
-        for (OpId wake : outcome.wakes) {
+        for (OpId wake : dropWakeUps ? List.<OpId>of() : outcome.wakes) {
             wakes.computeIfAbsent(wake.member(), member -> new ArrayList<>()).add(wake);
         }
         Set<UUID> targets = new java.util.HashSet<>(wakes.keySet());
@@ -464,9 +483,23 @@ final class ClusterNode {
         return space + '\u0000' + container;
     }
 
+    /** A periodic task: runs in the background, and is skipped while its previous run still goes on. */
+    private void runUnlessRunning(java.util.concurrent.atomic.AtomicBoolean running, Runnable task) {
+        if (running.compareAndSet(false, true)) {
+            runInBackground(() -> {
+                try {
+                    task.run();
+                } finally {
+                    running.set(false);
+                }
+            });
+        }
+    }
+
+    /** Runs {@code task}, which may call the cluster, on a background thread. */
     void runInBackground(Runnable task) {
         try {
-            background.execute(() -> {
+            maintenance.execute(() -> {
                 try {
                     task.run();
                 } catch (RuntimeException e) {
@@ -478,16 +511,13 @@ final class ClusterNode {
         }
     }
 
-    /** Runs {@code task} after {@code delayMillis}; the handle cancels it (null if the member is closing). */
+    /**
+     * Runs {@code task} (which may call the cluster) in the background after {@code delayMillis}; the handle cancels
+     * it (null if the member is closing).
+     */
     java.util.concurrent.ScheduledFuture<?> schedule(Runnable task, long delayMillis) {
         try {
-            return background.schedule(() -> {
-                try {
-                    task.run();
-                } catch (RuntimeException e) {
-                    LOG.log(Level.WARNING, "background task of the cluster space failed", e);
-                }
-            }, delayMillis, TimeUnit.MILLISECONDS);
+            return background.schedule(() -> runInBackground(task), delayMillis, TimeUnit.MILLISECONDS);
         } catch (RejectedExecutionException closing) {
             return null; // the member is shutting down
         }
@@ -508,10 +538,11 @@ final class ClusterNode {
         try {
             for (DistributedObject object : hazelcast.getDistributedObjects()) {
                 if (object instanceof IMap<?, ?> && object.getName().startsWith(HazelcastSetup.CONTAINERS)) {
-                    IMap<String, ContainerRecord> map = containers(object.getName()
-                            .substring(HazelcastSetup.CONTAINERS.length()));
+                    String space = object.getName().substring(HazelcastSetup.CONTAINERS.length());
+                    IMap<String, ContainerRecord> map = containers(space);
                     for (String container : map.localKeySet()) {
-                        map.executeOnKey(container, ContainerCall.sweep(gone));
+                        // entries that come back may serve waiting operations: their wake-ups are passed on
+                        dispatch(space, container, map.executeOnKey(container, ContainerCall.sweep(gone)));
                     }
                 }
             }
@@ -540,10 +571,10 @@ final class ClusterNode {
         }
         LOG.log(Level.INFO, "cluster member " + departed.getAddress() + " left");
         this.departed.put(departed.getUuid(), System.nanoTime());
+        wakeWaiters(); // at once: the departed may have served them without passing the news on
         if (isOldest()) {
-            forgetDeparted();
+            forgetDeparted(); // may serve operations again (their wake-ups are passed on as any call's)
         }
-        wakeWaiters();
         checkInboxes();
     }
 
@@ -628,6 +659,7 @@ final class ClusterNode {
             // already shut down
         }
         background.shutdownNow();
+        maintenance.shutdown();
         steps.shutdown();
         delivery.close();
     }

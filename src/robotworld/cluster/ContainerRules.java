@@ -421,7 +421,8 @@ final class ContainerRules {
 
     /**
      * Forgets members that left the cluster: their queued operations and subscriptions go, and what was served to
-     * them but never collected is undone (a take's entries return), since no thread is left to receive it.
+     * them but never collected is undone (a take's entries return), since no thread is left to receive it. What was
+     * served to live members but not collected yet is woken again.
      */
     Outcome forgetMembers(Predicate<UUID> live) {
         boolean changed = false;
@@ -436,6 +437,10 @@ final class ContainerRules {
                 record.removeCompletion(completion.getKey());
                 undo(completion.getValue(), completion.getKey());
                 changed = true;
+            } else {
+                // served for a live member, not yet collected: the departed may have been the one to pass the
+                // wake-up on, and died first; without it the waiter would only find out at its next look
+                outcome.addWake(completion.getKey());
             }
         }
         for (OpId subscriber : List.copyOf(record.subscribers())) {
