@@ -233,7 +233,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             } else if (kind == Kind.SWEEP) {
                 rules.expireReceipts();
                 if (!departed.isEmpty()) {
-                    rules.forgetMembers(member -> !departed.contains(member));
+                    rules.forgetMembers(member -> !departed.contains(member), false);
                 }
             }
             try {
@@ -268,7 +268,7 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
                 case WITHDRAW_AND_UNDO -> rules.withdraw(target, true);
                 case ACKNOWLEDGE -> rules.acknowledge(targets);
                 case READ_JOURNAL -> rules.readJournal(after, targets);
-                case FORGET_MEMBERS -> rules.forgetMembers(live::contains);
+                case FORGET_MEMBERS -> rules.forgetMembers(live::contains, true);
                 case UNSUBSCRIBE, UNSUBSCRIBE_OLDER, ACK_RECEIPTS, RESTORE_RECEIPT, SWEEP ->
                         Outcome.of(Outcome.Status.DONE);
                 case TAKE_COMPLETED -> rules.takeCompleted(client);
@@ -296,11 +296,11 @@ final class ContainerCall implements EntryProcessor<String, ContainerRecord, Out
             case TAKE_COMPLETED -> rules.takeCompleted(client);
             case FORBID -> rules.forbid(client);
             case FIND_RECEIPTS -> rules.findReceipts(clients);
-            case SWEEP -> Outcome.of(Outcome.Status.DONE);
+            case SWEEP -> rules.done(); // with the wake-ups of what its sweep served (process)
             case DESCRIBE -> rules.describe();
             case READ_JOURNAL -> rules.readJournal(after, targets);
             case DESTROY_CONTAINER -> rules.destroy();
-            case FORGET_MEMBERS -> rules.forgetMembers(live::contains);
+            case FORGET_MEMBERS -> rules.forgetMembers(live::contains, true);
         };
     }
 

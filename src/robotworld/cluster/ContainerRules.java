@@ -421,10 +421,12 @@ final class ContainerRules {
 
     /**
      * Forgets members that left the cluster: their queued operations and subscriptions go, and what was served to
-     * them but never collected is undone (a take's entries return), since no thread is left to receive it. What was
-     * served to live members but not collected yet is woken again.
+     * them but never collected is undone (a take's entries return), since no thread is left to receive it.
+     *
+     * @param wakeLive whether what was served to live members but not collected yet is woken again (when a member
+     *                 has just left: it may have been the one to pass the wake-up on, and died first)
      */
-    Outcome forgetMembers(Predicate<UUID> live) {
+    Outcome forgetMembers(Predicate<UUID> live, boolean wakeLive) {
         boolean changed = false;
         for (WaiterRecord waiter : List.copyOf(record.waiters())) {
             if (waiter.kind() != WaiterRecord.Kind.RESTORE && !live.test(waiter.id().member())) {
@@ -437,10 +439,8 @@ final class ContainerRules {
                 record.removeCompletion(completion.getKey());
                 undo(completion.getValue(), completion.getKey());
                 changed = true;
-            } else {
-                // served for a live member, not yet collected: the departed may have been the one to pass the
-                // wake-up on, and died first; without it the waiter would only find out at its next look
-                outcome.addWake(completion.getKey());
+            } else if (wakeLive) {
+                outcome.addWake(completion.getKey()); // else the waiter would only find out at its next look
             }
         }
         for (OpId subscriber : List.copyOf(record.subscribers())) {
@@ -460,7 +460,12 @@ final class ContainerRules {
         return outcome;
     }
 
-    /** Drops what has been abandoned: outcomes of long-finished calls, results nobody collected (undone). */
+    /** The outcome of a call that only maintained the container: done, with the wake-ups and events it caused. */
+    Outcome done() {
+        outcome.status = Outcome.Status.DONE;
+        return outcome;
+    }
+
     /**
      * Puts back held removals whose lease ran out, and forgets receipts of completed and cancelled calls after a
      * while (and beyond {@link #MAX_RECEIPTS}).

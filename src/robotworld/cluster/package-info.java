@@ -66,7 +66,9 @@
  * wake-up, which the serving call's member passes on ({@link robotworld.cluster.MemberMessage}); the woken thread
  * collects its result from the container. A timed-out, interrupted or closed wait withdraws its operation, unless
  * it was served meanwhile: then it gets the result. Threads also look by themselves every 1 to 5 s, and at once
- * when a member leaves, so a lost wake-up delays an operation but never loses it.</li>
+ * when a member leaves, so a lost wake-up delays an operation but never loses it. The timers of waits (deadlines,
+ * looks) have threads of their own that never call the cluster: a member's background work (clearing a departed
+ * member, sweeps, reading journals) can block for seconds while the cluster recovers, and runs on other threads.</li>
  * <li><b>Notifications</b>: while a container has subscriptions, each operation that affected entries is journaled
  * as an event naming its predecessor and passed on to the members with subscriptions. Each member's
  * {@link robotworld.cluster.EventInbox} puts events back in order, reads missing ones from the journal, and hands

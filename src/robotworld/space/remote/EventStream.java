@@ -101,18 +101,29 @@ final class EventStream {
     private void register(String usedSession, String serverId, RemoteSubscription subscription) {
         synchronized (lock) {
             subscriptions.add(subscription);
+            if (!usedSession.equals(session)) {
+                resubscribeNeeded = true; // the session broke meanwhile: the reader re-establishes it
+                return;
+            }
+            // established on this session (so the reader does not subscribe it again, and a cancel reaches the
+            // server), though not yet reachable for the reader's frames
+            subscription.session = usedSession;
+            subscription.serverId = serverId;
         }
         while (true) {
             Parked parked;
             synchronized (lock) {
                 if (!usedSession.equals(session)) {
-                    resubscribeNeeded = true; // the session broke meanwhile: the reader re-establishes it
+                    subscription.session = null;
+                    subscription.serverId = null;
+                    resubscribeNeeded = true;
                     return;
                 }
                 parked = early.remove(serverId);
+                if (!subscription.isActive()) {
+                    break; // ended while its parked frames were handed over (its queue overflowed)
+                }
                 if (parked == null) {
-                    subscription.session = usedSession;
-                    subscription.serverId = serverId;
                     byServerId.put(serverId, subscription);
                     return;
                 }
@@ -127,13 +138,11 @@ final class EventStream {
                 }
             }
             if (parked.overflowed) {
-                // frames were dropped while it waited: say so rather than go on, and stop the server sending
-                subscription.session = usedSession;
-                subscription.serverId = serverId;
-                subscription.overflowed();
-                return;
+                subscription.overflowed(); // frames were dropped while it waited: say so rather than go on
+                break;
             }
         }
+        forget(subscription); // ended here: its server side was asked to stop, and its end frame finds no one
     }
 
     /** Test hook: runs when a new subscription's answer is in and it is about to be registered. */
