@@ -339,6 +339,8 @@ final class ClusterNode {
 
     /** For tests: wake-ups are not passed on, as when the member that served an operation died first. */
     volatile boolean dropWakeUps;
+    /** For tests: events are not passed on (as if still on their way to the members with subscriptions). */
+    volatile boolean dropEvents;
 
     /** Passes a call's effects to the members concerned: wake-ups to waiting threads, events to subscriptions. */
     void dispatch(String space, String container, Outcome outcome) {
@@ -350,10 +352,12 @@ final class ClusterNode {
             wakes.computeIfAbsent(wake.member(), member -> new ArrayList<>()).add(wake);
         }
         Set<UUID> targets = new java.util.HashSet<>(wakes.keySet());
-        targets.addAll(outcome.eventMembers);
+        if (!dropEvents) {
+            targets.addAll(outcome.eventMembers);
+        }
         for (UUID member : targets) {
             MemberMessage message = new MemberMessage(space, container, wakes.getOrDefault(member, List.of()),
-                    outcome.eventMembers.contains(member) ? outcome.events : List.of());
+                    !dropEvents && outcome.eventMembers.contains(member) ? outcome.events : List.of());
             if (member.equals(self)) {
                 receive(message);
             } else {

@@ -658,6 +658,15 @@ public final class ClusterSpace implements SpaceEngine, AsyncTakes {
         }
     }
 
+    /** The sequence of the container's last journaled event, or -1 if it cannot be asked now. */
+    long chainTailOf(String container) {
+        try {
+            return node.call(name, container, ContainerCall.describe(), allowance(), uri).chainTail;
+        } catch (RuntimeException e) {
+            return -1;
+        }
+    }
+
     Outcome readJournal(String container, long after, List<OpId> registered) {
         return node.call(name, container, ContainerCall.readJournal(after, registered), allowance(), uri);
     }

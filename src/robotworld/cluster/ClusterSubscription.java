@@ -66,11 +66,20 @@ final class ClusterSubscription implements Subscription {
         if (!queued.isActive()) {
             return;
         }
+        // events of calls made through other members may still be on their way here: what happened before the
+        // cancel is delivered first (read from the container's journal if need be)
+        long before = space.chainTailOf(container);
+        if (before >= 0) {
+            inbox.awaitDelivered(before, System.nanoTime() + CATCH_UP_NANOS);
+        }
         if (unregistered.compareAndSet(false, true)) {
             space.unregister(container, id);
         }
         queued.cancel();
     }
+
+    /** How long a cancel waits at most for the events from before it. */
+    private static final long CATCH_UP_NANOS = java.util.concurrent.TimeUnit.SECONDS.toNanos(2);
 
     /** Ends it for a reason the inbox found (the container was destroyed, events were lost). */
     void endedBy(SubscriptionEnd reason) {

@@ -402,6 +402,7 @@ final class ContainerRules {
         info.blocked = record.waiters().size();
         info.subscriptions = record.subscribers().size();
         info.sequence = record.sequence();
+        info.chainTail = record.chainTail();
         return info;
     }
 

@@ -125,6 +125,33 @@ final class EventInbox {
         closeIfUnused();
     }
 
+    /**
+     * Returns once every event up to sequence {@code upTo} has been delivered (reading what is missing from the
+     * journal), the subscriptions have ended, or {@code deadline} ({@link System#nanoTime()}) has passed.
+     */
+    void awaitDelivered(long upTo, long deadline) {
+        while (true) {
+            synchronized (this) {
+                if (last >= upTo || subscriptions.isEmpty()) {
+                    return;
+                }
+                try {
+                    wait(10); // a message on its way may bring them
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+                if (last >= upTo) {
+                    return;
+                }
+            }
+            if (System.nanoTime() - deadline >= 0) {
+                return;
+            }
+            repair();
+        }
+    }
+
     /** A subscription ended: it no longer gets events. */
     synchronized void remove(ClusterSubscription subscription) {
         subscriptions.remove(subscription);
