@@ -206,6 +206,8 @@ final class ReplayCommand implements Callable<Integer> {
                 });
             } catch (SpaceInterruptedException ctrlC) {
                 Thread.currentThread().interrupt(); // Ctrl-C while a call to the replay space waited: a stop too
+            } catch (java.nio.channels.ClosedByInterruptException ctrlC) {
+                Thread.currentThread().interrupt(); // Ctrl-C while the recording was being read: a stop too
             }
             boolean interrupted = Thread.interrupted();
             if (!quiet) {
