@@ -81,17 +81,7 @@ class TimersNeverWaitForWorkTest {
     private static CompletableFuture<Object> takeLater(ClusterSpace space, ContainerRef queue, Timeout timeout) {
         CompletableFuture<Object> outcome = new CompletableFuture<>();
         space.removeLater(queue, Operation.TAKE, timeout, new Selector[] {Selector.fifo(1)}, null,
-                new SpaceEngine.Completion<Removal>() {
-                    @Override
-                    public void completed(Removal removal) {
-                        outcome.complete(removal.entries());
-                    }
-
-                    @Override
-                    public void failed(SpaceException failure) {
-                        outcome.complete(failure);
-                    }
-                });
+                robotworld.testsupport.Completions.into(outcome, Removal::entries));
         return outcome;
     }
 

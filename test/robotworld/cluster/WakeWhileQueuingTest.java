@@ -52,17 +52,7 @@ class WakeWhileQueuingTest {
             };
             CompletableFuture<Object> outcome = new CompletableFuture<>();
             space.removeLater(queue, Operation.TAKE, Timeout.ofMillis(60_000), new Selector[] {Selector.fifo(5)},
-                    "client-a:1", new SpaceEngine.Completion<Removal>() {
-                        @Override
-                        public void completed(Removal removal) {
-                            outcome.complete(removal.entries());
-                        }
-
-                        @Override
-                        public void failed(SpaceException failure) {
-                            outcome.complete(failure);
-                        }
-                    });
+                    "client-a:1", robotworld.testsupport.Completions.into(outcome, Removal::entries));
             assertEquals(1, space.describeContainer(queue).blocked(), "one call, one queued take");
             for (int i = 1; i <= 10; i++) {
                 space.write(queue, Timeout.TRY_ONCE, Entry.of(i));

@@ -250,17 +250,7 @@ class FramesTest {
                 java.util.concurrent.CompletableFuture<Object> outcome = new java.util.concurrent.CompletableFuture<>();
                 outcomes.add(outcome);
                 client.takeLater(queue, Timeout.ofMillis(10_000), new robotworld.space.Selector[0],
-                        new robotworld.space.SpaceEngine.Completion<>() {
-                            @Override
-                            public void completed(List<Entry> entries) {
-                                outcome.complete(entries);
-                            }
-
-                            @Override
-                            public void failed(robotworld.space.SpaceException failure) {
-                                outcome.complete(failure);
-                            }
-                        });
+                        robotworld.testsupport.Completions.into(outcome, entries -> entries));
             }
             long deadline = System.nanoTime() + 10_000_000_000L;
             while (client.describeContainer(queue).blocked() < 3 && System.nanoTime() < deadline) {
@@ -296,17 +286,7 @@ class FramesTest {
                 // in one write; refused, the frame goes again over HTTP
                 java.util.concurrent.CompletableFuture<Object> later = new java.util.concurrent.CompletableFuture<>();
                 client.takeLater(queue, Timeout.ofMillis(10_000), new robotworld.space.Selector[0],
-                        new robotworld.space.SpaceEngine.Completion<>() {
-                            @Override
-                            public void completed(List<Entry> entries) {
-                                later.complete(entries);
-                            }
-
-                            @Override
-                            public void failed(robotworld.space.SpaceException failure) {
-                                later.complete(failure);
-                            }
-                        });
+                        robotworld.testsupport.Completions.into(later, entries -> entries));
                 long deadline = System.nanoTime() + 10_000_000_000L;
                 while (direct.describeContainer(queue).blocked() < 1 && System.nanoTime() < deadline) {
                     Thread.sleep(10);
