@@ -15,7 +15,6 @@ import org.eclipse.jetty.server.HttpConfiguration;
 import org.eclipse.jetty.server.HttpConnectionFactory;
 import org.eclipse.jetty.server.NetworkConnectionLimit;
 import org.eclipse.jetty.server.Server;
-import org.eclipse.jetty.server.ServerConnector;
 import org.eclipse.jetty.server.handler.EagerContentHandler;
 import org.eclipse.jetty.util.thread.QueuedThreadPool;
 import robotworld.core.HostNames;
@@ -48,15 +47,17 @@ public final class SpaceServer implements AutoCloseable {
     private static final int MAX_BUSY_THREADS = 200;
 
     private final Server jetty;
+    private final ClosingConnector connector;
     private final ServerState state;
     private final boolean ownsSpace;
     private final ScheduledExecutorService sessionTimer;
     private final int port;
     private boolean stopped;
 
-    private SpaceServer(Server jetty, ServerState state, boolean ownsSpace, ScheduledExecutorService sessionTimer,
-                        int port) {
+    private SpaceServer(Server jetty, ClosingConnector connector, ServerState state, boolean ownsSpace,
+                        ScheduledExecutorService sessionTimer, int port) {
         this.jetty = jetty;
+        this.connector = connector;
         this.state = state;
         this.ownsSpace = ownsSpace;
         this.sessionTimer = sessionTimer;
@@ -96,7 +97,7 @@ public final class SpaceServer implements AutoCloseable {
         Executor connections = ownsSpace || !space.callsMayBlock() ? new ResumeInPlace(threads) : threads;
         // operation requests come as HTTP or, on connections upgraded to it, as frames
         FrameProtocol frames = new FrameProtocol();
-        ServerConnector connector = new ServerConnector(jetty, connections, null, null, 1, selectors,
+        ClosingConnector connector = new ClosingConnector(jetty, connections, selectors,
                 new HttpConnectionFactory(http), frames);
         connector.setHost(options.bindAddress());
         connector.setPort(options.port());
@@ -158,7 +159,7 @@ public final class SpaceServer implements AutoCloseable {
             }
             throw new SpaceException("cannot start the space server: " + e.getMessage(), e);
         }
-        return new SpaceServer(jetty, state, ownsSpace, sessionTimer, port);
+        return new SpaceServer(jetty, connector, state, ownsSpace, sessionTimer, port);
     }
 
     private static String uriHost(String bind) {
@@ -275,6 +276,7 @@ public final class SpaceServer implements AutoCloseable {
         } catch (Exception e) {
             System.getLogger(SpaceServer.class.getName()).log(System.Logger.Level.WARNING, "jetty stop failed", e);
         }
+        connector.closeLeftOpen(); // those accepted while stopping, which Jetty may leave open and unserved
         state.calls.cancelAll();
         sessionTimer.shutdownNow();
         if (ownsSpace) {
