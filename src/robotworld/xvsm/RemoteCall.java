@@ -1,10 +1,15 @@
 package robotworld.xvsm;
 
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import robotworld.space.AsyncTakes;
 import robotworld.space.Entry;
 import robotworld.space.Item;
 import robotworld.space.Selector;
+import robotworld.space.SpaceEngine;
 import robotworld.space.SpaceException;
 import robotworld.space.SpaceInterruptedException;
 import robotworld.space.SpaceTimeoutException;
@@ -20,9 +25,17 @@ import robotworld.space.Tuple;
  *
  * <p>When the deadline passes, the request is withdrawn from the queue if it is still there (so a late module
  * host does not carry out a command its caller gave up on); if it is already being served, the call is handed to
- * {@link AbandonedCalls}, which takes the late answer away.
+ * {@link AbandonedCalls}, which takes the late answer away. The withdrawal never holds the caller past the call's
+ * bound: it gets {@value #WITHDRAW_MILLIS} ms, and none if the space itself answered late (a cluster taking its
+ * partitions back, a slow link); what it cannot settle in that time goes to {@link AbandonedCalls} too, which
+ * withdraws the request when it finds it queued.
  */
 final class RemoteCall {
+
+    /** How long the caller waits for its request to be withdrawn after the deadline. */
+    static final long WITHDRAW_MILLIS = 250;
+    /** A timeout answer later than this past the deadline says the space is slow: withdraw in the background. */
+    private static final long LATE_ANSWER_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
 
     private final XVSMRemoteModule module;
     private final CallTuple request;
@@ -46,7 +59,7 @@ final class RemoteCall {
             // one exchange with a remote space: the take of the answer waits there from the moment of the write
             answer = containers.writeThenTake(Item.of(tuple), () -> remaining(deadline), Selector.key(request.key()));
         } catch (SpaceTimeoutException e) {
-            throw timedOut(tuple);
+            throw timedOut(System.nanoTime() - deadline > LATE_ANSWER_NANOS ? leaveToSweeper(tuple) : giveUp(tuple));
         } catch (SpaceInterruptedException e) {
             giveUp(tuple);
             throw failure("the calling thread was interrupted", e);
@@ -91,13 +104,26 @@ final class RemoteCall {
         return answer;
     }
 
-    private ModuleCallTimeoutException timedOut(Tuple tuple) {
-        boolean withdrawn = giveUp(tuple);
+    private ModuleCallTimeoutException timedOut(Withdrawal withdrawal) {
         return new ModuleCallTimeoutException(module.participant(), module.moduleName(), function, timeoutMillis,
                 where() + ": no answer within " + timeoutMillis + " ms from the host serving it (asked from host "
-                        + module.hostName() + "); " + (withdrawn
-                        ? "the request was still queued and is withdrawn: is the module's program running?"
-                        : "the request was being served; its late answer will be discarded"));
+                        + module.hostName() + "); " + switch (withdrawal) {
+                            case WITHDRAWN -> "the request was still queued and is withdrawn: is the module's "
+                                    + "program running?";
+                            case BEING_SERVED -> "the request was being served; its late answer will be discarded";
+                            case IN_BACKGROUND -> "the space was slow to answer; the request is withdrawn, or its "
+                                    + "late answer discarded, in the background";
+                        });
+    }
+
+    /** What became of a request whose call gave up. */
+    private enum Withdrawal {
+        /** Taken back from REQUEST before anyone served it. */
+        WITHDRAWN,
+        /** Already gone from REQUEST: being served; {@link AbandonedCalls} takes its late answer away. */
+        BEING_SERVED,
+        /** Not known in time: {@link AbandonedCalls} withdraws it, or takes its late answer away. */
+        IN_BACKGROUND
     }
 
     private ModuleCallException failure(String why, Throwable cause) {
@@ -106,20 +132,40 @@ final class RemoteCall {
     }
 
     /**
-     * Withdraws the request if it is still queued, else leaves the late answer to {@link AbandonedCalls}.
-     *
-     * @return whether the request was withdrawn
+     * Withdraws the request if it is still queued, else leaves the late answer to {@link AbandonedCalls}; waits
+     * at most {@link #WITHDRAW_MILLIS} for the space, after which the withdrawal goes on without the caller and
+     * hands a request it finds served to {@link AbandonedCalls} as well.
      */
-    private boolean giveUp(Tuple tuple) {
+    private Withdrawal giveUp(Tuple tuple) {
         boolean interrupted = Thread.interrupted(); // the clean-up must not fail for the caller's interrupt
+        ModuleContainers containers = module.containers;
+        CompletableFuture<Boolean> withdrawn = new CompletableFuture<>();
         try {
-            ModuleContainers containers = module.containers;
-            List<Entry> withdrawn = containers.onRequests(requests -> containers.space().take(requests,
-                    Timeout.TRY_ONCE, Selector.template(Template.value(tuple), Selector.ALL)));
-            if (!withdrawn.isEmpty()) {
-                return true;
+            AsyncTakes.of(containers.space()).takeLater(containers.requests(), Timeout.TRY_ONCE,
+                    new Selector[] {Selector.template(Template.value(tuple), Selector.ALL)},
+                    new SpaceEngine.Completion<>() {
+                        @Override
+                        public void completed(List<Entry> taken) {
+                            withdrawn.complete(!taken.isEmpty());
+                        }
+
+                        @Override
+                        public void failed(SpaceException failure) {
+                            withdrawn.complete(false); // unknown: the sweeper looks again
+                        }
+                    });
+            if (withdrawn.get(WITHDRAW_MILLIS, TimeUnit.MILLISECONDS)) {
+                return Withdrawal.WITHDRAWN;
             }
-        } catch (SpaceException e) {
+        } catch (TimeoutException | InterruptedException stillRunning) {
+            interrupted |= stillRunning instanceof InterruptedException;
+            withdrawn.thenAccept(gone -> {
+                if (!gone) {
+                    abandon(tuple);
+                }
+            });
+            return Withdrawal.IN_BACKGROUND;
+        } catch (SpaceException | ExecutionException e) {
             // unknown: let the sweeper look again
         } finally {
             if (interrupted) {
@@ -127,7 +173,13 @@ final class RemoteCall {
             }
         }
         abandon(tuple);
-        return false;
+        return Withdrawal.BEING_SERVED;
+    }
+
+    /** The space is slow: the sweeper withdraws the request, or takes its late answer away. */
+    private Withdrawal leaveToSweeper(Tuple tuple) {
+        abandon(tuple);
+        return Withdrawal.IN_BACKGROUND;
     }
 
     /** Leaves the request, or its late answer, to {@link AbandonedCalls}. */
