@@ -43,6 +43,11 @@ final class AbandonedCalls {
         scheduleSweep();
     }
 
+    /** Forgets the call with {@code key}: its request was withdrawn after all, so no answer will come. */
+    void forget(String key) {
+        calls.removeIf(call -> call.key().equals(key));
+    }
+
     /** How many calls are still being tidied up after. */
     int size() {
         return calls.size();

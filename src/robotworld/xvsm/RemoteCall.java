@@ -59,9 +59,10 @@ final class RemoteCall {
             // one exchange with a remote space: the take of the answer waits there from the moment of the write
             answer = containers.writeThenTake(Item.of(tuple), () -> remaining(deadline), Selector.key(request.key()));
         } catch (SpaceTimeoutException e) {
-            throw timedOut(System.nanoTime() - deadline > LATE_ANSWER_NANOS ? leaveToSweeper(tuple) : giveUp(tuple));
+            // a space that was late to say so is slow: the withdrawal starts, but the caller does not wait for it
+            throw timedOut(giveUp(tuple, System.nanoTime() - deadline > LATE_ANSWER_NANOS ? 0 : WITHDRAW_MILLIS));
         } catch (SpaceInterruptedException e) {
-            giveUp(tuple);
+            giveUp(tuple, WITHDRAW_MILLIS);
             throw failure("the calling thread was interrupted", e);
         } catch (SpaceException e) {
             // the space itself failed: asking it to withdraw the request now would spend a second network
@@ -133,10 +134,11 @@ final class RemoteCall {
 
     /**
      * Withdraws the request if it is still queued, else leaves the late answer to {@link AbandonedCalls}; waits
-     * at most {@link #WITHDRAW_MILLIS} for the space, after which the withdrawal goes on without the caller and
-     * hands a request it finds served to {@link AbandonedCalls} as well.
+     * at most {@code waitMillis} for the space. A withdrawal that takes longer goes on without the caller, and the
+     * call is handed to {@link AbandonedCalls} at once (so that a runtime closing meanwhile still withdraws the
+     * request); if the withdrawal then succeeds, the call is forgotten there.
      */
-    private Withdrawal giveUp(Tuple tuple) {
+    private Withdrawal giveUp(Tuple tuple, long waitMillis) {
         boolean interrupted = Thread.interrupted(); // the clean-up must not fail for the caller's interrupt
         ModuleContainers containers = module.containers;
         CompletableFuture<Boolean> withdrawn = new CompletableFuture<>();
@@ -154,14 +156,15 @@ final class RemoteCall {
                             withdrawn.complete(false); // unknown: the sweeper looks again
                         }
                     });
-            if (withdrawn.get(WITHDRAW_MILLIS, TimeUnit.MILLISECONDS)) {
+            if (withdrawn.get(waitMillis, TimeUnit.MILLISECONDS)) {
                 return Withdrawal.WITHDRAWN;
             }
         } catch (TimeoutException | InterruptedException stillRunning) {
             interrupted |= stillRunning instanceof InterruptedException;
+            abandon(tuple);
             withdrawn.thenAccept(gone -> {
-                if (!gone) {
-                    abandon(tuple);
+                if (gone) {
+                    module.runtime().abandonedCalls().forget(request.key()); // nothing left to tidy up
                 }
             });
             return Withdrawal.IN_BACKGROUND;
@@ -174,12 +177,6 @@ final class RemoteCall {
         }
         abandon(tuple);
         return Withdrawal.BEING_SERVED;
-    }
-
-    /** The space is slow: the sweeper withdraws the request, or takes its late answer away. */
-    private Withdrawal leaveToSweeper(Tuple tuple) {
-        abandon(tuple);
-        return Withdrawal.IN_BACKGROUND;
     }
 
     /** Leaves the request, or its late answer, to {@link AbandonedCalls}. */
