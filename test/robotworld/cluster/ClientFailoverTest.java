@@ -77,6 +77,9 @@ class ClientFailoverTest {
 
     /** Member {@code i} dies with its server, as when its process is killed. */
     private void kill(int i) {
+        // these tests are about the clients' failover, not a crash before the backups are in sync (on a loaded
+        // machine a container created just before the crash was lost that way: see docs/cluster.md)
+        cluster.awaitSize(cluster.members.size());
         cluster.member(i).crash();
         servers.get(i).kill();
     }
