@@ -49,6 +49,11 @@ final class ContainerRecord implements IdentifiedDataSerializable {
     private final Map<String, Receipt> receipts = new LinkedHashMap<>();
     private boolean destroyed;
     private List<Change> log;
+    /**
+     * No receipt is due before this time (owner's clock), so the owner need not walk them on every call; unknown
+     * ({@code Long.MIN_VALUE}) in a copy that arrived from another member. A cache, neither logged nor serialized.
+     */
+    private long receiptsDueAt = Long.MIN_VALUE;
 
     /** For deserialization. */
     ContainerRecord() {
@@ -152,6 +157,15 @@ final class ContainerRecord implements IdentifiedDataSerializable {
         return destroyed;
     }
 
+    long receiptsDueAt() {
+        return receiptsDueAt;
+    }
+
+    /** After a walk of the receipts: none of those left is due before {@code at}. */
+    void receiptsWalked(long at) {
+        receiptsDueAt = at;
+    }
+
     // ---- the primitive changes ----
 
     void setSequence(long value) {
@@ -226,6 +240,9 @@ final class ContainerRecord implements IdentifiedDataSerializable {
     void putReceipt(String call, Receipt receipt) {
         receipts.remove(call); // a newer receipt goes last, in time order
         receipts.put(call, receipt);
+        if (receiptsDueAt != Long.MIN_VALUE) {
+            receiptsDueAt = Math.min(receiptsDueAt, receipt.dueAt());
+        }
         log(new Change.ReceiptPut(call, receipt));
     }
 

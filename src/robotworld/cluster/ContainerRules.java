@@ -31,8 +31,7 @@ final class ContainerRules {
     /** How long a served operation's result waits to be collected before it is undone as abandoned. */
     static final long UNCOLLECTED_AFTER_MILLIS = 120_000;
 
-    /** How long receipts of completed and cancelled calls are kept, and how many at most per container. */
-    static final long RECEIPT_KEPT_MILLIS = 120_000;
+    /** How many receipts of completed and cancelled calls a container keeps at most. */
     static final int MAX_RECEIPTS = 10_000;
 
     private final ContainerRecord record;
@@ -475,16 +474,23 @@ final class ContainerRules {
         if (record.receipts().isEmpty()) {
             return;
         }
-        List<Map.Entry<String, Receipt>> due = new ArrayList<>();
         int surplus = record.receipts().size() - MAX_RECEIPTS;
+        if (surplus <= 0 && now < record.receiptsDueAt()) {
+            return; // nothing is due yet: a busy container holds thousands, too many to walk on every call
+        }
+        List<Map.Entry<String, Receipt>> due = new ArrayList<>();
+        long nextDue = Long.MAX_VALUE;
         for (Map.Entry<String, Receipt> receipt : record.receipts().entrySet()) {
             Receipt value = receipt.getValue();
             boolean expired = value.kind() == Receipt.Kind.HELD ? value.expiresAt() <= now
-                    : now - value.at() > RECEIPT_KEPT_MILLIS || surplus-- > 0;
+                    : now - value.at() > Receipt.KEPT_MILLIS || surplus-- > 0;
             if (expired) {
                 due.add(receipt);
+            } else {
+                nextDue = Math.min(nextDue, value.dueAt());
             }
         }
+        record.receiptsWalked(nextDue); // before the removals below, whose serving may hold new removals
         for (Map.Entry<String, Receipt> receipt : due) {
             record.removeReceipt(receipt.getKey());
             if (receipt.getValue().kind() == Receipt.Kind.HELD) {

@@ -25,6 +25,9 @@ record Receipt(Kind kind, List<PlacedEntry> held, List<Entry> displaced, long at
 
     enum Kind { HELD, DONE, FORBIDDEN }
 
+    /** How long receipts of completed and cancelled calls are kept for late confirmations and cancels. */
+    static final long KEPT_MILLIS = 120_000;
+
     static Receipt held(List<PlacedEntry> removed, long now, long leaseMillis) {
         return new Receipt(Kind.HELD, removed, List.of(), now, now + leaseMillis);
     }
@@ -35,6 +38,11 @@ record Receipt(Kind kind, List<PlacedEntry> held, List<Entry> displaced, long at
 
     static Receipt forbidden(long now) {
         return new Receipt(Kind.FORBIDDEN, List.of(), List.of(), now, Long.MAX_VALUE);
+    }
+
+    /** When it may go (owner's clock): a held removal when its lease runs out, the others once kept long enough. */
+    long dueAt() {
+        return kind == Kind.HELD ? expiresAt : at + KEPT_MILLIS;
     }
 
     void write(ObjectDataOutput out) throws IOException {

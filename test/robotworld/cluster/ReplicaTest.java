@@ -220,6 +220,34 @@ class ReplicaTest {
     }
 
     @Test
+    void aShortLeaseRunsOutOnTimeAmongReceiptsKeptForMinutes() throws Exception {
+        Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO), 8));
+        for (int i = 0; i < 50; i++) { // completed writes: their receipts are kept for minutes
+            pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(i))), 0).forClient("w:" + i,
+                    60_000));
+        }
+        pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(99))), 0)); // walks them once
+        Outcome taken = pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, next(MEMBER_B), new Selector[0], 0)
+                .forClient("k:1", 30));
+        assertEquals(List.of(Entry.of(0)), taken.entries);
+        assertEquals(50, pair.owner.contents().size());
+        Thread.sleep(40);
+        pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(100))), 0));
+        assertEquals(52, pair.owner.contents().size(), "the unconfirmed take's entry is back once its lease ran out");
+        assertNull(pair.owner.receipts().get("k:1"));
+        assertEquals(50, pair.owner.receipts().size(), "the writes' receipts stay");
+        assertEquals(state(pair.owner), state(pair.backup));
+
+        pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, next(MEMBER_B), new Selector[0], 0)
+                .forClient("k:2", 30));
+        pair = pair.promoted(); // a new owner knows nothing of when receipts fall due: it walks them
+        Thread.sleep(40);
+        pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(101))), 0));
+        assertEquals(53, pair.owner.contents().size(), "a lease held before the promotion runs out too");
+        assertEquals(state(pair.owner), state(pair.backup));
+    }
+
+    @Test
     void aServedClientTakeIsHeldForItsOwnLeaseWhoeverServedIt() throws Exception {
         Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO), 8));
         OpId waiter = next(MEMBER_B);
