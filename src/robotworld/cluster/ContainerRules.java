@@ -1,6 +1,7 @@
 package robotworld.cluster;
 
 import java.util.ArrayList;
+import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -474,23 +475,35 @@ final class ContainerRules {
         if (record.receipts().isEmpty()) {
             return;
         }
+        // a busy container holds thousands of receipts, too many to walk on every call: walk them only when one
+        // can be due, and between walks drop the oldest completed ones past the limit from the front (oldest first)
         int surplus = record.receipts().size() - MAX_RECEIPTS;
-        if (surplus <= 0 && now < record.receiptsDueAt()) {
-            return; // nothing is due yet: a busy container holds thousands, too many to walk on every call
-        }
         List<Map.Entry<String, Receipt>> due = new ArrayList<>();
-        long nextDue = Long.MAX_VALUE;
-        for (Map.Entry<String, Receipt> receipt : record.receipts().entrySet()) {
-            Receipt value = receipt.getValue();
-            boolean expired = value.kind() == Receipt.Kind.HELD ? value.expiresAt() <= now
-                    : now - value.at() > Receipt.KEPT_MILLIS || surplus-- > 0;
-            if (expired) {
-                due.add(receipt);
-            } else {
-                nextDue = Math.min(nextDue, value.dueAt());
+        if (now >= record.receiptsDueAt()) {
+            long nextDue = Long.MAX_VALUE;
+            for (Map.Entry<String, Receipt> receipt : record.receipts().entrySet()) {
+                Receipt value = receipt.getValue();
+                boolean expired = value.kind() == Receipt.Kind.HELD ? value.expiresAt() <= now
+                        : now - value.at() > Receipt.KEPT_MILLIS || surplus-- > 0;
+                if (expired) {
+                    due.add(receipt);
+                } else {
+                    nextDue = Math.min(nextDue, value.dueAt());
+                }
             }
+            record.receiptsWalked(nextDue); // before the removals below, whose serving may hold new removals
+        } else if (surplus > 0) {
+            for (Iterator<Map.Entry<String, Receipt>> it = record.receipts().entrySet().iterator();
+                 surplus > 0 && it.hasNext(); ) {
+                Map.Entry<String, Receipt> receipt = it.next();
+                if (receipt.getValue().kind() != Receipt.Kind.HELD) {
+                    due.add(receipt);
+                    surplus--;
+                }
+            }
+        } else {
+            return;
         }
-        record.receiptsWalked(nextDue); // before the removals below, whose serving may hold new removals
         for (Map.Entry<String, Receipt> receipt : due) {
             record.removeReceipt(receipt.getKey());
             if (receipt.getValue().kind() == Receipt.Kind.HELD) {

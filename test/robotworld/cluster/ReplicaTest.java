@@ -248,6 +248,28 @@ class ReplicaTest {
     }
 
     @Test
+    void pastTheLimitTheOldestCompletedReceiptsGoAndHeldRemovalsStay() {
+        Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO), 8));
+        pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(-1))), 0));
+        pair.run(ContainerCall.retrieve(ContainerCall.Kind.TAKE, next(MEMBER_B), new Selector[0], 0)
+                .forClient("k:held", 60_000)); // the oldest receipt, and not due for a minute
+        int writes = ContainerRules.MAX_RECEIPTS + 5;
+        for (int i = 0; i < writes; i++) {
+            pair.run(ContainerCall.write(next(MEMBER_A), List.of(Item.of(Entry.of(i))), 0).forClient("w:" + i,
+                    60_000));
+        }
+        Map<String, Receipt> receipts = pair.owner.receipts();
+        assertEquals(ContainerRules.MAX_RECEIPTS + 1, receipts.size(), "the limit, and the last call's own receipt");
+        assertEquals(Receipt.Kind.HELD, receipts.get("k:held").kind(), "a held removal is never dropped for room");
+        for (int i = 0; i < 5; i++) {
+            assertNull(receipts.get("w:" + i), "the oldest completed receipts went first");
+        }
+        assertNotNull(receipts.get("w:5"));
+        assertNotNull(receipts.get("w:" + (writes - 1)));
+        assertEquals(state(pair.owner), state(pair.backup));
+    }
+
+    @Test
     void aServedClientTakeIsHeldForItsOwnLeaseWhoeverServedIt() throws Exception {
         Pair pair = new Pair(new ContainerRecord("c1", ContainerSpec.of(Order.FIFO), 8));
         OpId waiter = next(MEMBER_B);
