@@ -29,6 +29,8 @@ final class HazelcastSetup {
     /** Topic of one member, {@code rwe.member.<uuid>}: carries {@link MemberMessage}s to that member only. */
     static final String MEMBER_TOPIC = "rwe.member.";
     static final String SPLIT_BRAIN_PROTECTION = "rwe.majority";
+    /** How long a change waits for its backups to confirm it (Hazelcast checks once a second). */
+    static final long BACKUP_ANSWER_MILLIS = 500;
 
     private HazelcastSetup() {
     }
@@ -56,6 +58,10 @@ final class HazelcastSetup {
         // a call whose owner stays silent this long fails (and is repeated, at most once in effect)
         config.setProperty("hazelcast.operation.call.timeout.millis",
                 Long.toString(Math.max(1_000, options.callAllowance().toMillis())));
+        // a change whose backup went to a member that had just died waits this long for the backup's answer, then
+        // stands (Hazelcast repairs the backup from the owner): the default 5 s held such calls, and so whole modules,
+        // for 5 s after a member's crash, in the short window before the survivors have a new partition table
+        config.setProperty("hazelcast.operation.backup.timeout.millis", Long.toString(BACKUP_ANSWER_MILLIS));
         config.setProperty("hazelcast.merge.first.run.delay.seconds", "5");
         config.setProperty("hazelcast.merge.next.run.delay.seconds", "5");
 
