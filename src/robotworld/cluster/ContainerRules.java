@@ -483,8 +483,7 @@ final class ContainerRules {
             long nextDue = Long.MAX_VALUE;
             for (Map.Entry<String, Receipt> receipt : record.receipts().entrySet()) {
                 Receipt value = receipt.getValue();
-                boolean expired = value.kind() == Receipt.Kind.HELD ? value.expiresAt() <= now
-                        : now - value.at() > Receipt.KEPT_MILLIS || surplus-- > 0;
+                boolean expired = value.isDue(now) || (value.kind() != Receipt.Kind.HELD && surplus-- > 0);
                 if (expired) {
                     due.add(receipt);
                 } else {

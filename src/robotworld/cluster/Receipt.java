@@ -45,6 +45,11 @@ record Receipt(Kind kind, List<PlacedEntry> held, List<Entry> displaced, long at
         return kind == Kind.HELD ? expiresAt : at + KEPT_MILLIS;
     }
 
+    /** Whether it is due at {@code now}: a held removal from its {@link #dueAt()}, the others only after it. */
+    boolean isDue(long now) {
+        return kind == Kind.HELD ? expiresAt <= now : now - at > KEPT_MILLIS;
+    }
+
     void write(ObjectDataOutput out) throws IOException {
         out.writeByte(kind.ordinal());
         Codec.writePlacedList(out, held);
