@@ -55,6 +55,7 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
     private long nap = ClusterNode.FIRST_NAP_NANOS;
     private ScheduledFuture<?> look;
     private ScheduledFuture<?> expiry;
+    private final WaiterStory story = WaiterStory.begin();
 
     AsyncWaiter(ClusterSpace space, String container, ContainerRef ref, Timeout timeout, Request request,
                 Function<Outcome, T> result, SpaceEngine.Completion<T> done) {
@@ -143,6 +144,7 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
 
     /** A wake-up (from the member whose call served it, a member leaving, or the handle closing). */
     private void woken() {
+        story.woken();
         space.node().runStep(this::look);
     }
 
@@ -151,6 +153,7 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
             look.cancel(false);
         }
         look = space.node().schedule(this::look, TimeUnit.NANOSECONDS.toMillis(nap)); // in the background
+        story.note("look again in ms", TimeUnit.NANOSECONDS.toMillis(nap));
         nap = Math.min(nap * 2, ClusterNode.LONGEST_NAP_NANOS);
     }
 
@@ -175,8 +178,11 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
         }
         Outcome outcome;
         try {
+            story.note("look", null);
             outcome = space.about(ContainerCall.Kind.COLLECT, container, waiter.id());
+            story.note("found", outcome.status);
         } catch (SpaceUnavailableException recovering) {
+            story.trouble("look failed:", recovering.getMessage());
             rest(); // the cluster is recovering: look again later
             return;
         } catch (SpaceException e) {
@@ -192,11 +198,13 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
 
     /** The container forgot the operation (this member was thought gone): it had no effect; queue it again. */
     private void queueAgain() {
+        story.trouble("queue again", null);
         space.node().unregister(waiter);
         Outcome outcome;
         try {
             outcome = queue();
         } catch (SpaceUnavailableException recovering) {
+            story.trouble("queue failed:", recovering.getMessage());
             rest();
             return;
         } catch (SpaceException e) {
@@ -320,6 +328,7 @@ final class AsyncWaiter<T> implements SpaceEngine.Pending {
         if (!end()) {
             return;
         }
+        story.ended(ref, failure == null ? "its result" : failure);
         if (failure != null) {
             done.failed(failure);
         } else {

@@ -51,6 +51,8 @@ final class ClusterNode {
     /** How long a waiting thread sleeps at most before it looks at its container anyway. */
     static final long LONGEST_NAP_NANOS = TimeUnit.SECONDS.toNanos(5);
     static final long FIRST_NAP_NANOS = TimeUnit.SECONDS.toNanos(1);
+    /** A cluster call slower than this is logged at DEBUG. */
+    static final long SLOW_CALL_MILLIS = 400;
     /** How often every inbox checks its chain against its container's journal, in case a message was lost. */
     private static final long INBOX_CHECK_MILLIS = 5_000;
     /** How often a member makes the containers it owns put back held removals whose lease ran out. */
@@ -272,12 +274,15 @@ final class ClusterNode {
     private <T> T retrying(Supplier<T> invocation, long deadline, URI uri, String what) {
         long pause = TimeUnit.MILLISECONDS.toNanos(20);
         boolean interrupted = false;
+        long started = System.nanoTime();
+        int attempts = 0;
+        Throwable failure = null;
         try {
             while (true) {
                 if (closed) {
                     throw memberGone(uri);
                 }
-                Throwable failure;
+                attempts++;
                 try {
                     return invocation.get(); // Hazelcast's synchronous calls are not interruptible
                 } catch (RuntimeException e) {
@@ -305,6 +310,20 @@ final class ClusterNode {
             if (interrupted) {
                 Thread.currentThread().interrupt();
             }
+            logIfSlow(what, started, attempts, failure);
+        }
+    }
+
+    /**
+     * At DEBUG, a cluster call that took longer than {@link #SLOW_CALL_MILLIS}: how long, how many attempts, what
+     * the last attempt failed with. What a member's log shows when calls stall after another member's loss.
+     */
+    private static void logIfSlow(String what, long started, int attempts, Throwable lastFailure) {
+        long millis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
+        if (millis > SLOW_CALL_MILLIS && LOG.isLoggable(Level.DEBUG)) {
+            LOG.log(Level.DEBUG, "slow cluster call: " + what + " took " + millis + " ms in " + attempts
+                    + (attempts == 1 ? " attempt" : " attempts") + (lastFailure == null ? ""
+                    : ", the last failure being " + lastFailure));
         }
     }
 

@@ -114,6 +114,7 @@ public final class ClusterKillSoak {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.add("-Xmx256m");
+        command.add("-Djava.util.logging.config.file=" + memberLogging());
         for (String argument : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
             if (argument.startsWith("--add-")) {
                 command.add(argument);
@@ -159,6 +160,23 @@ public final class ClusterKillSoak {
         drain.setDaemon(true);
         drain.start();
         return new Member(process, url, address);
+    }
+
+    /**
+     * The members' java.util.logging set-up: this package at DEBUG unless {@code -Dbench.memberDebug=false}, so that
+     * a member's log shows its slow cluster calls, troubled waits and partition moves around each kill.
+     */
+    private static Path memberLogging() throws IOException {
+        Path file = logs.resolve("member-logging.properties");
+        if (!Files.exists(file)) {
+            boolean debug = Boolean.parseBoolean(System.getProperty("bench.memberDebug", "true"));
+            Files.writeString(file, String.join("\n",
+                    "handlers=java.util.logging.ConsoleHandler",
+                    "java.util.logging.ConsoleHandler.level=ALL",
+                    "java.util.logging.SimpleFormatter.format=%1$tT.%1$tL %4$s %2$s: %5$s%6$s%n",
+                    "robotworld.cluster.level=" + (debug ? "FINE" : "INFO"), ""));
+        }
+        return file;
     }
 
     private static int freePort() throws IOException {
@@ -226,11 +244,13 @@ public final class ClusterKillSoak {
     }
 
     /**
-     * {@code -Dbench.dumpAfterKillMillis=1000,1500}: thread dumps of the surviving members at those times after each
-     * kill, into the log folder, to see what their threads wait for while calls are slow to come back.
+     * Thread dumps of the surviving members into the log folder, to see what their threads wait for while calls are
+     * slow to come back: by default at 2.5 and 4 s after a kill whose calls have not yet come back to half their
+     * rate; with {@code -Dbench.dumpAfterKillMillis=1000,1500} after every kill at those times ("" for none).
      */
     private static void dumpSurvivors(List<Member> members, Member dead, int kill, long killedAt) throws Exception {
-        String when = System.getProperty("bench.dumpAfterKillMillis", "");
+        String asked = System.getProperty("bench.dumpAfterKillMillis");
+        String when = asked == null ? "2500,4000" : asked;
         if (when.isBlank()) {
             return;
         }
@@ -240,6 +260,11 @@ public final class ClusterKillSoak {
             if (early > 0) {
                 TimeUnit.NANOSECONDS.sleep(early);
             }
+            if (asked == null && resumedAfter(killedAt) < TimeUnit.MILLISECONDS.toNanos(SETTLE_MILLIS)) {
+                return; // calls came back: nothing to look at
+            }
+            System.out.printf(Locale.ROOT, "%tT.%<tL calls not back %s ms after kill %d: thread dumps of the"
+                    + " survivors into the log folder%n", System.currentTimeMillis(), each.trim(), kill);
             for (int i = 0; i < members.size(); i++) {
                 Member member = members.get(i);
                 if (member != dead) {
