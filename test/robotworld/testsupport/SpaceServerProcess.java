@@ -67,6 +67,11 @@ public final class SpaceServerProcess implements AutoCloseable {
         throw new IllegalStateException("the space server process did not start; it said:\n" + said);
     }
 
+    /** The server process's id (for its CPU time, say). */
+    public long pid() {
+        return process.pid();
+    }
+
     public URI uri() {
         return uri;
     }

@@ -37,14 +37,15 @@ public final class Wire {
                 .maxNameLength(256)
                 .maxDocumentLength(limits.maxBodyBytes() + 1L)
                 .build();
+        // a field named twice is refused by WireReader (more cheaply than the parser's own detection would)
         return JsonFactory.builder()
                 .streamReadConstraints(constraints)
-                .enable(com.fasterxml.jackson.core.StreamReadFeature.STRICT_DUPLICATE_DETECTION)
                 .disable(JsonFactory.Feature.INTERN_FIELD_NAMES)
                 // buffers shared through a pool, not one set per thread: the server writes an answer to a waiting
                 // call while the answer of the call that satisfied it is open on the same thread, and with
-                // per-thread buffers that second writer allocated 16 KB of fresh buffers each time
-                .recyclerPool(JsonRecyclerPools.newConcurrentDequePool())
+                // per-thread buffers that second writer allocated 16 KB of fresh buffers each time; the lock-free
+                // pool, as the two selector threads take and give back buffers all the time
+                .recyclerPool(JsonRecyclerPools.newLockFreePool())
                 .build()
                 .disable(JsonParser.Feature.AUTO_CLOSE_SOURCE);
     }

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.net.URI;
 import java.net.URISyntaxException;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
@@ -40,6 +41,11 @@ public final class WireReader implements AutoCloseable {
     private final JsonParser parser;
     private final WireLimits limits;
     private final CrefMapping crefs;
+    /** The field names of the open objects, outermost first; {@link #objectStarts} says where each one's begin. */
+    private String[] names = new String[16];
+    private int nameCount;
+    private int[] objectStarts = new int[8];
+    private int openObjects;
 
     private WireReader(JsonParser parser, WireLimits limits, CrefMapping crefs) {
         this.parser = parser;
@@ -483,6 +489,42 @@ public final class WireReader implements AutoCloseable {
     // ---- low level ----
 
     private JsonToken next() {
+        JsonToken token = nextToken();
+        if (token == JsonToken.START_OBJECT) {
+            openObject();
+        } else if (token == JsonToken.FIELD_NAME) {
+            noteField(name());
+        } else if (token == JsonToken.END_OBJECT) {
+            openObjects--;
+            nameCount = objectStarts[openObjects];
+        }
+        return token;
+    }
+
+    // A message that names a field twice is refused, as its meaning would depend on which one a reader keeps. Checked
+    // here rather than by the parser's own detection, which builds a hash set per object: messages have objects of a
+    // few fields, and a scan of those is what costs least.
+
+    private void openObject() {
+        if (openObjects == objectStarts.length) {
+            objectStarts = Arrays.copyOf(objectStarts, openObjects * 2);
+        }
+        objectStarts[openObjects++] = nameCount;
+    }
+
+    private void noteField(String name) {
+        for (int i = objectStarts[openObjects - 1]; i < nameCount; i++) {
+            if (names[i].equals(name)) {
+                throw new WireFormatException("the field '" + Wire.truncate(name) + "' appears twice in one object");
+            }
+        }
+        if (nameCount == names.length) {
+            names = Arrays.copyOf(names, nameCount * 2);
+        }
+        names[nameCount++] = name;
+    }
+
+    private JsonToken nextToken() {
         try {
             return parser.nextToken();
         } catch (StreamConstraintsException e) {

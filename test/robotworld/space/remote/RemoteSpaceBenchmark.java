@@ -129,7 +129,7 @@ public final class RemoteSpaceBenchmark {
     private static void pairs(URI uri, RedisPeer redis) throws Exception {
         if (Boolean.parseBoolean(System.getProperty("bench.pairsInProcess", "false"))) {
             System.out.printf("%nspace server for the pairs: in this JVM (-Dbench.pairsInProcess=true)%n");
-            concurrentPairs(uri, redis, 1);
+            concurrentPairs(uri, null, redis, 1);
         } else {
             // as Redis is: its own process, so its heap and collector are not the 100 clients' ones
             List<String> jvm = new ArrayList<>(List.of("-Xmx1g"));
@@ -137,10 +137,20 @@ public final class RemoteSpaceBenchmark {
             if (!extra.isBlank()) {
                 jvm.addAll(List.of(extra.trim().split("\\s+")));
             }
+            String compare = System.getProperty("bench.pairsCompare", "");
+            if (!compare.isBlank()) {
+                List<String> other = new ArrayList<>(jvm);
+                other.addAll(List.of(compare.trim().split("\\s+")));
+                try (SpaceServerProcess a = SpaceServerProcess.start(jvm);
+                     SpaceServerProcess b = SpaceServerProcess.start(other)) {
+                    comparePairs(a, b, compare, redis);
+                }
+                return;
+            }
             try (SpaceServerProcess own = SpaceServerProcess.start(jvm)) {
                 System.out.printf("%nspace server for the pairs: its own process (rwe space, -Xmx1g), as"
                         + " Redis is; three warm-up runs, since its JIT starts cold%n");
-                concurrentPairs(own.uri(), redis, 3);
+                concurrentPairs(own.uri(), ProcessHandle.of(own.pid()).orElseThrow(), redis, 3);
             }
         }
     }
@@ -450,52 +460,102 @@ public final class RemoteSpaceBenchmark {
      * {@link #PAIRS} request/answer pairs at once, each a caller and a module with containers (or Redis lists) of
      * their own, doing the module-call cycle as fast as answers come; ours and Redis alternately, 3 runs each.
      */
-    private static void concurrentPairs(URI uri, RedisPeer redis, int warmUpRuns) throws Exception {
-        System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours (frames,"
-                + " then HTTP) and Redis alternately:%n", PAIRS, PAIR_MILLIS);
-        List<double[]> ours = new ArrayList<>();
-        List<double[]> oursHttp = new ArrayList<>();
-        List<double[]> theirs = new ArrayList<>();
-        for (int run = -warmUpRuns; run < 3; run++) { // the runs before 0 warm up
-            double[] space = pairsRun(uri, null, RemoteSpace.Options.defaults());
-            double[] spaceHttp = pairsRun(uri, null, HTTP);
-            double[] redisRun = redis == null ? null : pairsRun(uri, redis, null);
+    /**
+     * The pairs against two servers in processes of their own, the second with the JVM options {@code compare}
+     * ({@code -Dbench.pairsCompare=...}, e.g. a system property that switches a trial change on), and Redis, in
+     * turn: an A/B trial measured in one run, on the same machine state.
+     */
+    private static void comparePairs(SpaceServerProcess a, SpaceServerProcess b, String compare, RedisPeer redis)
+            throws Exception {
+        System.out.printf("%n%d concurrent request/answer pairs, %d ms per run: server A as configured, server B with"
+                + " %s, and Redis, in turn (three warm-up rounds, then 5):%n", PAIRS, PAIR_MILLIS, compare);
+        ProcessHandle processA = ProcessHandle.of(a.pid()).orElseThrow();
+        ProcessHandle processB = ProcessHandle.of(b.pid()).orElseThrow();
+        List<PairsRun> runsA = new ArrayList<>();
+        List<PairsRun> runsB = new ArrayList<>();
+        List<PairsRun> runsRedis = new ArrayList<>();
+        for (int run = -3; run < 5; run++) {
+            PairsRun ofA = pairsRun(a.uri(), processA, null, RemoteSpace.Options.defaults());
+            PairsRun ofB = pairsRun(b.uri(), processB, null, RemoteSpace.Options.defaults());
+            PairsRun ofRedis = redis == null ? null : pairsRun(a.uri(), redisProcess(redis), redis, null);
             if (run >= 0) {
-                ours.add(space);
-                oursHttp.add(spaceHttp);
-                System.out.printf("  run %d: space %,.0f calls/s, p50 %.0f us, p99 %.0f us; over HTTP %,.0f calls/s,"
-                        + " p50 %.0f us, p99 %.0f us", run + 1, space[0], space[1], space[2], spaceHttp[0],
-                        spaceHttp[1], spaceHttp[2]);
-                if (redisRun != null) {
-                    theirs.add(redisRun);
-                    System.out.printf("; Redis %,.0f calls/s, p50 %.0f us, p99 %.0f us", redisRun[0], redisRun[1],
-                            redisRun[2]);
+                runsA.add(ofA);
+                runsB.add(ofB);
+                System.out.printf("  run %d:%n    A %s%n    B %s%n", run + 1, ofA, ofB);
+                if (ofRedis != null) {
+                    runsRedis.add(ofRedis);
+                    System.out.printf("    Redis %s%n", ofRedis);
                 }
-                System.out.println();
             }
         }
-        double[] space = medians(ours);
-        System.out.printf("  median: space %,.0f calls/s, p50 %.0f us, p99 %.0f us%n", space[0], space[1], space[2]);
-        double[] http = medians(oursHttp);
-        System.out.printf("  median: space over HTTP %,.0f calls/s, p50 %.0f us, p99 %.0f us (frames: %.2f x its"
-                + " calls/s)%n", http[0], http[1], http[2], space[0] / http[0]);
-        if (!theirs.isEmpty()) {
-            double[] r = medians(theirs);
-            System.out.printf("  median: Redis %,.0f calls/s, p50 %.0f us, p99 %.0f us%n", r[0], r[1], r[2]);
-            System.out.printf("  %d pairs: space %.2f x Redis calls/s (target >= 1: %s), p99 %.2f x Redis p99 (target"
-                    + " <= 1: %s)%n", PAIRS, space[0] / r[0], space[0] >= r[0] ? "met" : "NOT met", space[2] / r[2],
-                    space[2] <= r[2] ? "met" : "NOT met");
+        System.out.printf("  median A: %s%n  median B: %s%n", PairsRun.medians(runsA), PairsRun.medians(runsB));
+        if (!runsRedis.isEmpty()) {
+            System.out.printf("  median Redis: %s%n", PairsRun.medians(runsRedis));
         }
     }
 
+    private static void concurrentPairs(URI uri, ProcessHandle server, RedisPeer redis, int warmUpRuns)
+            throws Exception {
+        System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours (frames,"
+                + " then HTTP) and Redis alternately:%n", PAIRS, PAIR_MILLIS);
+        List<PairsRun> ours = new ArrayList<>();
+        List<PairsRun> oursHttp = new ArrayList<>();
+        List<PairsRun> theirs = new ArrayList<>();
+        for (int run = -warmUpRuns; run < 3; run++) { // the runs before 0 warm up
+            PairsRun space = pairsRun(uri, server, null, RemoteSpace.Options.defaults());
+            PairsRun spaceHttp = pairsRun(uri, server, null, HTTP);
+            PairsRun redisRun = redis == null ? null : pairsRun(uri, redisProcess(redis), redis, null);
+            if (run >= 0) {
+                ours.add(space);
+                oursHttp.add(spaceHttp);
+                System.out.printf("  run %d:%n    space %s%n    over HTTP %s%n", run + 1, space, spaceHttp);
+                if (redisRun != null) {
+                    theirs.add(redisRun);
+                    System.out.printf("    Redis %s%n", redisRun);
+                }
+            }
+        }
+        PairsRun space = PairsRun.medians(ours);
+        System.out.printf("  median: space %s%n", space);
+        PairsRun http = PairsRun.medians(oursHttp);
+        System.out.printf("  median: space over HTTP %s (frames: %.2f x its calls/s)%n", http,
+                space.callsPerSecond / http.callsPerSecond);
+        if (!theirs.isEmpty()) {
+            PairsRun r = PairsRun.medians(theirs);
+            System.out.printf("  median: Redis %s%n", r);
+            System.out.printf("  %d pairs: space %.2f x Redis calls/s (target >= 1: %s), p99 %.2f x Redis p99 (target"
+                    + " <= 1: %s)%n", PAIRS, space.callsPerSecond / r.callsPerSecond,
+                    space.callsPerSecond >= r.callsPerSecond ? "met" : "NOT met", space.p99Micros / r.p99Micros,
+                    space.p99Micros <= r.p99Micros ? "met" : "NOT met");
+        }
+    }
+
+    /** The redis-server process, for its CPU time. */
+    private static ProcessHandle redisProcess(RedisPeer redis) {
+        return ProcessHandle.of(redis.pid()).orElseThrow();
+    }
+
+    /** CPU time a process has used so far, in ns; -1 where the OS does not say. */
+    private static long cpuNanos(ProcessHandle process) {
+        return process.info().totalCpuDuration().map(java.time.Duration::toNanos).orElse(-1L);
+    }
+
+    /** CPU time this JVM has used so far, in ns (the clients; and the server too when it runs in here). */
+    private static long ownCpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory
+                .getOperatingSystemMXBean()).getProcessCpuTime();
+    }
+
     /**
-     * One run of {@link #PAIRS} pairs: {calls/s, p50 us, p99 us}; with Redis when {@code redis} is given, else with
-     * space clients of {@code options}.
+     * One run of {@link #PAIRS} pairs, with Redis when {@code redis} is given, else with space clients of
+     * {@code options}; {@code server} is the server's process (for its CPU time), null if it runs in this JVM.
      */
-    private static double[] pairsRun(URI uri, RedisPeer redis, RemoteSpace.Options options) throws Exception {
+    private static PairsRun pairsRun(URI uri, ProcessHandle server, RedisPeer redis, RemoteSpace.Options options)
+            throws Exception {
         String suffix = Long.toString(System.nanoTime());
         List<AutoCloseable> resources = new ArrayList<>();
         long[][] perCaller = new long[PAIRS][];
+        long[][] endedAt = new long[PAIRS][];
         CyclicBarrier start = new CyclicBarrier(PAIRS + 1);
         CountDownLatch done = new CountDownLatch(PAIRS);
         long[] stopAt = new long[1];
@@ -525,6 +585,7 @@ public final class RemoteSpaceBenchmark {
                     }, "bench-pair-module-" + p));
                     caller = () -> {
                         long[] samples = new long[1 << 16];
+                        long[] ends = new long[1 << 16];
                         int count = 0;
                         while (System.nanoTime() < stopAt[0] && count < samples.length) {
                             long begin = System.nanoTime();
@@ -533,10 +594,13 @@ public final class RemoteSpaceBenchmark {
                             if (answer.longAt(0) != count + 1) {
                                 throw new IllegalStateException("wrong answer " + answer);
                             }
-                            samples[count++] = System.nanoTime() - begin;
+                            long end = System.nanoTime();
+                            ends[count] = end;
+                            samples[count++] = end - begin;
                         }
                         a.write(requests, Timeout.TRY_ONCE, Tuple.of());
                         perCaller[pair] = Arrays.copyOf(samples, count);
+                        endedAt[pair] = Arrays.copyOf(ends, count);
                     };
                 } else {
                     Jedis a = redis.connect();
@@ -556,6 +620,7 @@ public final class RemoteSpaceBenchmark {
                     }, "bench-pair-redis-" + p));
                     caller = () -> {
                         long[] samples = new long[1 << 16];
+                        long[] ends = new long[1 << 16];
                         int count = 0;
                         while (System.nanoTime() < stopAt[0] && count < samples.length) {
                             long begin = System.nanoTime();
@@ -564,10 +629,13 @@ public final class RemoteSpaceBenchmark {
                             if (Long.parseLong(answer) != count + 1) {
                                 throw new IllegalStateException("wrong Redis answer " + answer);
                             }
-                            samples[count++] = System.nanoTime() - begin;
+                            long end = System.nanoTime();
+                            ends[count] = end;
+                            samples[count++] = end - begin;
                         }
                         a.rpush(requests, "");
                         perCaller[pair] = Arrays.copyOf(samples, count);
+                        endedAt[pair] = Arrays.copyOf(ends, count);
                     };
                 }
                 Runnable body = caller;
@@ -586,29 +654,22 @@ public final class RemoteSpaceBenchmark {
             modules.forEach(Thread::start);
             stopAt[0] = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PAIR_MILLIS);
             long begin = System.nanoTime();
+            long serverCpu = server == null ? -1 : cpuNanos(server);
+            long clientCpu = ownCpuNanos();
             start.await();
             done.await();
             double seconds = (System.nanoTime() - begin) / 1e9;
+            serverCpu = server == null || serverCpu < 0 ? -1 : cpuNanos(server) - serverCpu;
+            clientCpu = ownCpuNanos() - clientCpu;
             for (Thread module : modules) {
                 module.join(5_000);
             }
-            long[] all = Arrays.stream(perCaller).filter(x -> x != null).flatMapToLong(Arrays::stream).toArray();
-            Arrays.sort(all);
-            return new double[] {all.length / seconds, percentile(all, 0.50) / 1e3, percentile(all, 0.99) / 1e3};
+            return PairsRun.of(perCaller, endedAt, begin, seconds, serverCpu, clientCpu);
         } finally {
             for (AutoCloseable resource : resources) {
                 resource.close();
             }
         }
-    }
-
-    private static double[] medians(List<double[]> runs) {
-        double[] result = new double[runs.get(0).length];
-        for (int i = 0; i < result.length; i++) {
-            int column = i;
-            result[i] = median(runs.stream().map(run -> run[column]).toList());
-        }
-        return result;
     }
 
     // ---- measuring ----

@@ -129,4 +129,19 @@ class WireCodecTest {
                 () -> reader("{\"e\":{\"cref\":\"c1\"}}").readEntry());
         assertTrue(message.getMessage().contains("space"), message.getMessage());
     }
+
+    @Test
+    void aFieldNamedTwiceInOneObjectIsRefused() {
+        WireReader top = reader("{\"t\":1,\"t\":2}");
+        top.readTimeout();
+        WireFormatException twice = assertThrows(WireFormatException.class, top::nextField);
+        assertTrue(twice.getMessage().contains("'t' appears twice"), twice.getMessage());
+        assertThrows(WireFormatException.class,
+                () -> reader("{\"s\":[{\"order\":\"fifo\",\"order\":\"lifo\"}]}").readSelectors());
+        assertThrows(WireFormatException.class,
+                () -> reader("{\"e\":{\"cref\":\"c1\",\"space\":\"x\",\"cref\":\"c2\"}}").readEntry());
+        // the same name in sibling objects, or in an object and one inside it, is two fields, not one twice
+        assertEquals(2, reader("{\"s\":[{\"order\":\"fifo\"},{\"order\":\"lifo\"}]}").readSelectors().length);
+        assertEquals(1, reader("{\"order\":[{\"order\":\"fifo\",\"count\":1}]}").readSelectors().length);
+    }
 }

@@ -226,6 +226,10 @@ class HostileRequestsTest {
                 + ",\"timeout\":0,\"selectors\":[{\"order\":\"fifo\",\"key\":\"k\"}]}")));
         attacks.add(new Attack("unknown field", t -> t.post("/read", "{\"container\":" + t.cref()
                 + ",\"timeout\":0,\"please\":true}")));
+        // requests that would be served if the second field were taken (or the first): a reader must not guess
+        attacks.add(new Attack("a field named twice", t -> t.post("/lookup", "{\"name\":\"queue\",\"name\":\"queue\"}")));
+        attacks.add(new Attack("a nested field named twice", t -> t.post("/describe", "{\"container\":"
+                + t.cref().replaceFirst("\\{", "{\"cref\":\"c999999\",") + "}")));
         attacks.add(new Attack("missing timeout", t -> t.post("/take", "{\"container\":" + t.cref() + "}")));
         attacks.add(new Attack("missing items", t -> t.post("/write", "{\"container\":" + t.cref() + ",\"timeout\":0}")));
         attacks.add(new Attack("writeThenTake without its take", t -> t.post("/writeThenTake", "{\"container\":"
