@@ -41,7 +41,7 @@ public final class WireReader implements AutoCloseable {
     private final JsonParser parser;
     private final WireLimits limits;
     private final CrefMapping crefs;
-    /** The field names of the open objects, outermost first; {@link #objectStarts} says where each one's begin. */
+    /** The field names of the open objects, outermost first; {@link #objectStarts}: where each one's names begin. */
     private String[] names = new String[16];
     private int nameCount;
     private int[] objectStarts = new int[8];

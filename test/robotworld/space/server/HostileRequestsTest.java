@@ -227,7 +227,8 @@ class HostileRequestsTest {
         attacks.add(new Attack("unknown field", t -> t.post("/read", "{\"container\":" + t.cref()
                 + ",\"timeout\":0,\"please\":true}")));
         // requests that would be served if the second field were taken (or the first): a reader must not guess
-        attacks.add(new Attack("a field named twice", t -> t.post("/lookup", "{\"name\":\"queue\",\"name\":\"queue\"}")));
+        attacks.add(new Attack("a field named twice", t -> t.post("/lookup",
+                "{\"name\":\"queue\",\"name\":\"queue\"}")));
         attacks.add(new Attack("a nested field named twice", t -> t.post("/describe", "{\"container\":"
                 + t.cref().replaceFirst("\\{", "{\"cref\":\"c999999\",") + "}")));
         attacks.add(new Attack("missing timeout", t -> t.post("/take", "{\"container\":" + t.cref() + "}")));
