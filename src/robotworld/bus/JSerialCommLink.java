@@ -10,6 +10,10 @@ import java.util.concurrent.locks.LockSupport;
  * of a {@code socat pty,rawer,link=A pty,rawer,link=B} pair), which is how tests exercise this path.
  *
  * <p>Modem lines (DTR, RTS, CTS, RI) are neither used nor required: ptys have none and a CM11A needs none.
+ *
+ * <p>Closing waits for the calls into the port that are under way on other threads (a read ends at its own timeout,
+ * a write within {@value #WRITE_TIMEOUT_MS} ms): jSerialComm's native code crashes the whole JVM when a port is
+ * closed under a read. Calls that start after {@link #close} fail with {@link LinkClosedException}.
  */
 public final class JSerialCommLink implements SerialLink {
 
@@ -17,6 +21,8 @@ public final class JSerialCommLink implements SerialLink {
     /** Read timeouts below this are waited out by polling: jSerialComm's own are 100 ms coarse on Linux. */
     private static final long COARSE_TIMEOUT_MS = 100;
     private static final long POLL_PAUSE_NANOS = 200_000;
+    /** How long a close waits for the calls under way; a call still in the port after that closes it when it ends. */
+    private static final long CLOSE_WAIT_NANOS = 5_000_000_000L;
 
     private final String path;
     private final SerialSettings settings;
@@ -24,6 +30,10 @@ public final class JSerialCommLink implements SerialLink {
     private PortLock portLock;
     private volatile boolean open;
     private int currentReadTimeoutMs = -1;
+    /** Guarded by this: calls now inside the port's native code. */
+    private int callsInPort;
+    /** Guarded by this: closed while a call was still inside the port; the last one to leave closes it. */
+    private boolean closeWhenIdle;
 
     /** A link to {@code path}, not yet opened. */
     public JSerialCommLink(String path, SerialSettings settings) {
@@ -40,6 +50,10 @@ public final class JSerialCommLink implements SerialLink {
     public synchronized void open() throws IOException {
         if (open) {
             return;
+        }
+        if (closeWhenIdle) {
+            throw new IOException(path + ": cannot open the link again yet: a call of its last opening is still in"
+                    + " the port");
         }
         PortLock lock = PortLock.acquire(path); // refuses a port another program holds, naming it
         SerialPort candidate;
@@ -72,23 +86,27 @@ public final class JSerialCommLink implements SerialLink {
 
     @Override
     public void write(byte[] bytes) throws IOException {
-        SerialPort p = requireOpen();
-        int written = 0;
-        while (written < bytes.length) {
-            int n = p.writeBytes(bytes, bytes.length - written, written);
-            if (n < 0) {
-                throw new LinkClosedException(path, "write failed: the device is gone");
+        SerialPort p = enter();
+        try {
+            int written = 0;
+            while (written < bytes.length) {
+                int n = p.writeBytes(bytes, bytes.length - written, written);
+                if (n < 0) {
+                    throw new LinkClosedException(path, "write failed: the device is gone");
+                }
+                if (n == 0) {
+                    throw new IOException(path + ": write timed out after " + WRITE_TIMEOUT_MS + " ms");
+                }
+                written += n;
             }
-            if (n == 0) {
-                throw new IOException(path + ": write timed out after " + WRITE_TIMEOUT_MS + " ms");
-            }
-            written += n;
+        } finally {
+            leave();
         }
     }
 
     @Override
     public int read(byte[] buffer, int offset, int length, Duration timeout) throws IOException {
-        SerialPort p = requireOpen();
+        requireOpen();
         long millis = Math.max(0, Math.min(Integer.MAX_VALUE, timeout.toMillis()));
         if (millis == 0) {
             // jSerialComm reads "0 ms semi-blocking" as "wait forever": look instead
@@ -104,14 +122,20 @@ public final class JSerialCommLink implements SerialLink {
                 return 0;
             }
             length = Math.min(length, ready);
-        } else {
-            setReadTimeout((int) millis);
         }
-        int n = p.readBytes(buffer, length, offset);
-        if (n < 0) {
-            throw new LinkClosedException(path, open ? "the device is gone" : "the link was closed");
+        SerialPort p = enter();
+        try {
+            if (millis >= COARSE_TIMEOUT_MS) {
+                setReadTimeout(p, (int) millis);
+            }
+            int n = p.readBytes(buffer, length, offset);
+            if (n < 0) {
+                throw new LinkClosedException(path, open ? "the device is gone" : "the link was closed");
+            }
+            return n;
+        } finally {
+            leave();
         }
-        return n;
     }
 
     /** Polls for data for up to {@code millis}; returns how many bytes are ready (0 when none came). */
@@ -129,11 +153,16 @@ public final class JSerialCommLink implements SerialLink {
 
     @Override
     public int available() throws IOException {
-        int n = requireOpen().bytesAvailable();
-        if (n < 0) {
-            throw new LinkClosedException(path, "the device is gone");
+        SerialPort p = enter();
+        try {
+            int n = p.bytesAvailable();
+            if (n < 0) {
+                throw new LinkClosedException(path, "the device is gone");
+            }
+            return n;
+        } finally {
+            leave();
         }
-        return n;
     }
 
     @Override
@@ -142,6 +171,48 @@ public final class JSerialCommLink implements SerialLink {
             return;
         }
         open = false;
+        long deadline = System.nanoTime() + CLOSE_WAIT_NANOS;
+        boolean interrupted = false;
+        while (callsInPort > 0) {
+            long left = deadline - System.nanoTime();
+            if (left <= 0) {
+                closeWhenIdle = true; // never under a call: the last one to leave closes the port
+                return;
+            }
+            try {
+                wait(left / 1_000_000 + 1);
+            } catch (InterruptedException e) {
+                interrupted = true; // closing is not optional; the interrupt is kept for the caller
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+        closePort();
+    }
+
+    /** A call into the port begins; fails once the link is closed. */
+    private synchronized SerialPort enter() throws IOException {
+        if (!open) {
+            throw new LinkClosedException(path, "the link was closed");
+        }
+        callsInPort++;
+        return port;
+    }
+
+    /** A call into the port has ended. */
+    private synchronized void leave() {
+        callsInPort--;
+        if (callsInPort == 0) {
+            if (closeWhenIdle) {
+                closeWhenIdle = false;
+                closePort();
+            }
+            notifyAll(); // a close waiting for this call
+        }
+    }
+
+    private void closePort() {
         port.closePort();
         portLock.close();
     }
@@ -158,10 +229,10 @@ public final class JSerialCommLink implements SerialLink {
         };
     }
 
-    private void setReadTimeout(int millis) {
+    private void setReadTimeout(SerialPort p, int millis) {
         // only touch the port when the timeout changes: each change is a system call
         if (millis != currentReadTimeoutMs) {
-            port.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING | SerialPort.TIMEOUT_WRITE_BLOCKING,
+            p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING | SerialPort.TIMEOUT_WRITE_BLOCKING,
                     millis, WRITE_TIMEOUT_MS);
             currentReadTimeoutMs = millis;
         }
