@@ -106,7 +106,6 @@ public final class JSerialCommLink implements SerialLink {
 
     @Override
     public int read(byte[] buffer, int offset, int length, Duration timeout) throws IOException {
-        requireOpen();
         long millis = Math.max(0, Math.min(Integer.MAX_VALUE, timeout.toMillis()));
         if (millis == 0) {
             // jSerialComm reads "0 ms semi-blocking" as "wait forever": look instead
@@ -194,7 +193,7 @@ public final class JSerialCommLink implements SerialLink {
     /** A call into the port begins; fails once the link is closed. */
     private synchronized SerialPort enter() throws IOException {
         if (!open) {
-            throw new LinkClosedException(path, "the link was closed");
+            throw new LinkClosedException(path, port == null ? "the link is not open" : "the link was closed");
         }
         callsInPort++;
         return port;
@@ -236,13 +235,6 @@ public final class JSerialCommLink implements SerialLink {
                     millis, WRITE_TIMEOUT_MS);
             currentReadTimeoutMs = millis;
         }
-    }
-
-    private SerialPort requireOpen() throws IOException {
-        if (!open) {
-            throw new LinkClosedException(path, "the link is not open");
-        }
-        return port;
     }
 
     private int parity() {

@@ -45,7 +45,11 @@ public final class WireReader implements AutoCloseable {
     private String[] names = new String[16];
     private int nameCount;
     private int[] objectStarts = new int[8];
+    /** Per open object, the names beyond its first {@value #SCANNED_NAMES}, once it has that many (else null). */
+    private Set<String>[] moreNames = newSets(8);
     private int openObjects;
+    /** The name of the field just read. */
+    private String field;
 
     private WireReader(JsonParser parser, WireLimits limits, CrefMapping crefs) {
         this.parser = parser;
@@ -79,7 +83,7 @@ public final class WireReader implements AutoCloseable {
         if (token != JsonToken.FIELD_NAME) {
             throw new WireFormatException("expected a field name or '}', found " + describe(token));
         }
-        return name();
+        return field;
     }
 
     /** Expects that nothing follows the message's top-level value. */
@@ -493,35 +497,61 @@ public final class WireReader implements AutoCloseable {
         if (token == JsonToken.START_OBJECT) {
             openObject();
         } else if (token == JsonToken.FIELD_NAME) {
-            noteField(name());
+            field = name();
+            noteField(field);
         } else if (token == JsonToken.END_OBJECT) {
             openObjects--;
             nameCount = objectStarts[openObjects];
+            moreNames[openObjects] = null;
         }
         return token;
     }
 
     // A message that names a field twice is refused, as its meaning would depend on which one a reader keeps. Checked
     // here rather than by the parser's own detection, which builds a hash set per object: messages have objects of a
-    // few fields, and a scan of those is what costs least.
+    // few fields, and a scan of those is what costs least. An object with more (fields a reader skips, say) goes on
+    // in a hash set, so that a message of many names cannot make the check quadratic.
+
+    /** Names an object may have before they are kept in a hash set instead of scanned. */
+    private static final int SCANNED_NAMES = 16;
 
     private void openObject() {
         if (openObjects == objectStarts.length) {
             objectStarts = Arrays.copyOf(objectStarts, openObjects * 2);
+            moreNames = Arrays.copyOf(moreNames, openObjects * 2);
         }
         objectStarts[openObjects++] = nameCount;
     }
 
     private void noteField(String name) {
-        for (int i = objectStarts[openObjects - 1]; i < nameCount; i++) {
+        int object = openObjects - 1;
+        for (int i = objectStarts[object]; i < nameCount; i++) {
             if (names[i].equals(name)) {
-                throw new WireFormatException("the field '" + Wire.truncate(name) + "' appears twice in one object");
+                throw twice(name);
             }
         }
-        if (nameCount == names.length) {
-            names = Arrays.copyOf(names, nameCount * 2);
+        if (nameCount - objectStarts[object] < SCANNED_NAMES) {
+            if (nameCount == names.length) {
+                names = Arrays.copyOf(names, nameCount * 2);
+            }
+            names[nameCount++] = name;
+            return;
         }
-        names[nameCount++] = name;
+        if (moreNames[object] == null) {
+            moreNames[object] = new java.util.HashSet<>();
+        }
+        if (!moreNames[object].add(name)) {
+            throw twice(name);
+        }
+    }
+
+    private static WireFormatException twice(String name) {
+        return new WireFormatException("the field '" + Wire.truncate(name) + "' appears twice in one object");
+    }
+
+    @SuppressWarnings("unchecked")
+    private static Set<String>[] newSets(int size) {
+        return (Set<String>[]) new Set<?>[size];
     }
 
     private JsonToken nextToken() {

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.CyclicBarrier;
 import java.util.concurrent.TimeUnit;
@@ -471,26 +472,15 @@ public final class RemoteSpaceBenchmark {
                 + " %s, and Redis, in turn (three warm-up rounds, then 5):%n", PAIRS, PAIR_MILLIS, compare);
         ProcessHandle processA = ProcessHandle.of(a.pid()).orElseThrow();
         ProcessHandle processB = ProcessHandle.of(b.pid()).orElseThrow();
-        List<PairsRun> runsA = new ArrayList<>();
-        List<PairsRun> runsB = new ArrayList<>();
-        List<PairsRun> runsRedis = new ArrayList<>();
-        for (int run = -3; run < 5; run++) {
-            PairsRun ofA = pairsRun(a.uri(), processA, null, RemoteSpace.Options.defaults());
-            PairsRun ofB = pairsRun(b.uri(), processB, null, RemoteSpace.Options.defaults());
-            PairsRun ofRedis = redis == null ? null : pairsRun(a.uri(), redisProcess(redis), redis, null);
-            if (run >= 0) {
-                runsA.add(ofA);
-                runsB.add(ofB);
-                System.out.printf("  run %d:%n    A %s%n    B %s%n", run + 1, ofA, ofB);
-                if (ofRedis != null) {
-                    runsRedis.add(ofRedis);
-                    System.out.printf("    Redis %s%n", ofRedis);
-                }
-            }
+        List<Way> ways = new ArrayList<>(List.of(
+                new Way("A", () -> pairsRun(a.uri(), processA, null, RemoteSpace.Options.defaults())),
+                new Way("B", () -> pairsRun(b.uri(), processB, null, RemoteSpace.Options.defaults()))));
+        if (redis != null) {
+            ways.add(new Way("Redis", () -> pairsRun(a.uri(), redisProcess(redis), redis, null)));
         }
-        System.out.printf("  median A: %s%n  median B: %s%n", PairsRun.medians(runsA), PairsRun.medians(runsB));
-        if (!runsRedis.isEmpty()) {
-            System.out.printf("  median Redis: %s%n", PairsRun.medians(runsRedis));
+        List<PairsRun> medians = inTurn(ways, 3, 5);
+        for (int i = 0; i < ways.size(); i++) {
+            System.out.printf("  median %s: %s%n", ways.get(i).label(), medians.get(i));
         }
     }
 
@@ -498,36 +488,53 @@ public final class RemoteSpaceBenchmark {
             throws Exception {
         System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours (frames,"
                 + " then HTTP) and Redis alternately:%n", PAIRS, PAIR_MILLIS);
-        List<PairsRun> ours = new ArrayList<>();
-        List<PairsRun> oursHttp = new ArrayList<>();
-        List<PairsRun> theirs = new ArrayList<>();
-        for (int run = -warmUpRuns; run < 3; run++) { // the runs before 0 warm up
-            PairsRun space = pairsRun(uri, server, null, RemoteSpace.Options.defaults());
-            PairsRun spaceHttp = pairsRun(uri, server, null, HTTP);
-            PairsRun redisRun = redis == null ? null : pairsRun(uri, redisProcess(redis), redis, null);
-            if (run >= 0) {
-                ours.add(space);
-                oursHttp.add(spaceHttp);
-                System.out.printf("  run %d:%n    space %s%n    over HTTP %s%n", run + 1, space, spaceHttp);
-                if (redisRun != null) {
-                    theirs.add(redisRun);
-                    System.out.printf("    Redis %s%n", redisRun);
-                }
-            }
+        List<Way> ways = new ArrayList<>(List.of(
+                new Way("space", () -> pairsRun(uri, server, null, RemoteSpace.Options.defaults())),
+                new Way("over HTTP", () -> pairsRun(uri, server, null, HTTP))));
+        if (redis != null) {
+            ways.add(new Way("Redis", () -> pairsRun(uri, redisProcess(redis), redis, null)));
         }
-        PairsRun space = PairsRun.medians(ours);
+        List<PairsRun> medians = inTurn(ways, warmUpRuns, 3);
+        PairsRun space = medians.get(0);
         System.out.printf("  median: space %s%n", space);
-        PairsRun http = PairsRun.medians(oursHttp);
+        PairsRun http = medians.get(1);
         System.out.printf("  median: space over HTTP %s (frames: %.2f x its calls/s)%n", http,
                 space.callsPerSecond / http.callsPerSecond);
-        if (!theirs.isEmpty()) {
-            PairsRun r = PairsRun.medians(theirs);
+        if (redis != null) {
+            PairsRun r = medians.get(2);
             System.out.printf("  median: Redis %s%n", r);
             System.out.printf("  %d pairs: space %.2f x Redis calls/s (target >= 1: %s), p99 %.2f x Redis p99 (target"
                     + " <= 1: %s)%n", PAIRS, space.callsPerSecond / r.callsPerSecond,
                     space.callsPerSecond >= r.callsPerSecond ? "met" : "NOT met", space.p99Micros / r.p99Micros,
                     space.p99Micros <= r.p99Micros ? "met" : "NOT met");
         }
+    }
+
+    /** One way of running the pairs (a server, a protocol, or Redis), named in the output. */
+    private record Way(String label, Callable<PairsRun> run) {
+    }
+
+    /**
+     * Runs each way in turn, round after round, so that all see the same machine: {@code warmUps} rounds not
+     * counted, then {@code rounds} printed. Returns each way's medians, in the order of {@code ways}.
+     */
+    private static List<PairsRun> inTurn(List<Way> ways, int warmUps, int rounds) throws Exception {
+        List<List<PairsRun>> runs = new ArrayList<>();
+        ways.forEach(way -> runs.add(new ArrayList<>()));
+        for (int round = -warmUps; round < rounds; round++) {
+            List<PairsRun> these = new ArrayList<>();
+            for (Way way : ways) {
+                these.add(way.run().call());
+            }
+            if (round >= 0) {
+                System.out.printf("  run %d:%n", round + 1);
+                for (int i = 0; i < ways.size(); i++) {
+                    runs.get(i).add(these.get(i));
+                    System.out.printf("    %s %s%n", ways.get(i).label(), these.get(i));
+                }
+            }
+        }
+        return runs.stream().map(PairsRun::medians).toList();
     }
 
     /** The redis-server process, for its CPU time. */

@@ -144,4 +144,30 @@ class WireCodecTest {
         assertEquals(2, reader("{\"s\":[{\"order\":\"fifo\"},{\"order\":\"lifo\"}]}").readSelectors().length);
         assertEquals(1, reader("{\"order\":[{\"order\":\"fifo\",\"count\":1}]}").readSelectors().length);
     }
+
+    @Test
+    void anObjectOfManyFieldsIsCheckedForTwiceNamedOnesToo() {
+        // past its first few names an object's names go into a hash set: a name seen twice is found on either side
+        StringBuilder many = new StringBuilder("{\"f0\":0");
+        for (int i = 1; i < 50_000; i++) {
+            many.append(",\"f").append(i).append("\":0");
+        }
+        assertEquals(50_000, skipAll(many + "}"));
+        WireFormatException early = assertThrows(WireFormatException.class, () -> skipAll(many + ",\"f3\":1}"));
+        assertTrue(early.getMessage().contains("'f3' appears twice"), early.getMessage());
+        WireFormatException late = assertThrows(WireFormatException.class, () -> skipAll(many + ",\"f40000\":1}"));
+        assertTrue(late.getMessage().contains("'f40000' appears twice"), late.getMessage());
+    }
+
+    /** Reads an object, skipping every value; returns how many fields it had. */
+    private int skipAll(String json) {
+        WireReader in = reader(json);
+        int fields = 1;
+        in.skipValue();
+        while (in.nextField() != null) {
+            in.skipValue();
+            fields++;
+        }
+        return fields;
+    }
 }
