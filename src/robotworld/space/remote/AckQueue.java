@@ -8,7 +8,9 @@ import java.util.function.Predicate;
 
 /**
  * Confirmations of takes that still have to reach the server. They ride in a header on the next request of any
- * thread, which costs no extra round trip; if no request goes out soon, a background flush sends them alone.
+ * thread, which costs no extra round trip; if no request takes them within the delay, the JVM's {@link AckSweeper}
+ * notices and this space's timer sends them alone (a delay of 0: at once). A confirmation so waits between the
+ * delay and the delay plus two of the sweeper's ticks when no request comes.
  */
 final class AckQueue {
 
@@ -20,6 +22,13 @@ final class AckQueue {
     private final ScheduledExecutorService timer;
     private final long delayMicros;
     private final Predicate<String> flusher;
+    private final AckSweeper sweeper;
+    /** How many times requests took confirmations: the sweeper's sign that they are moving. */
+    private volatile long drains;
+    /** The sweeper's own: whether it saw confirmations waiting, since when, and after how many drains. */
+    private boolean seen;
+    private long seenSince;
+    private long seenDrains;
 
     /**
      * @param timer   runs the background flush
@@ -27,14 +36,52 @@ final class AckQueue {
      * @param flusher sends a header value on its own; false if that failed (the acks are then re-queued)
      */
     AckQueue(ScheduledExecutorService timer, long delayMicros, Predicate<String> flusher) {
+        this(timer, delayMicros, flusher, AckSweeper.shared());
+    }
+
+    AckQueue(ScheduledExecutorService timer, long delayMicros, Predicate<String> flusher, AckSweeper sweeper) {
+        this.sweeper = sweeper;
         this.timer = timer;
         this.delayMicros = delayMicros;
         this.flusher = flusher;
+        if (delayMicros > 0) {
+            sweeper.register(this);
+        }
     }
 
     void add(String callId) {
         pending.add(callId);
-        scheduleFlush(delayMicros);
+        if (delayMicros == 0) {
+            scheduleFlush(0);
+        } else {
+            sweeper.pending();
+        }
+    }
+
+    /** Stops the sweeps of this queue (the space is closing; it sends what is left itself). */
+    void close() {
+        sweeper.unregister(this);
+    }
+
+    /**
+     * Called by the sweeper every tick: has this space's timer send the confirmations that have waited at least the
+     * delay without a request taking any. True if confirmations are outstanding.
+     */
+    boolean sweep(long now) {
+        if (pending.isEmpty()) {
+            seen = false;
+            return false;
+        }
+        long drainsNow = drains;
+        if (!seen || drainsNow != seenDrains) {
+            seen = true; // newly waiting, or requests took some since the last look: count from now
+            seenSince = now;
+            seenDrains = drainsNow;
+        } else if (now - seenSince >= TimeUnit.MICROSECONDS.toNanos(delayMicros)) {
+            seen = false;
+            scheduleFlush(0);
+        }
+        return true;
     }
 
     /** Takes up to a request's worth of acks as a header value, or null if none are pending. */
@@ -43,6 +90,7 @@ final class AckQueue {
         if (first == null) {
             return null;
         }
+        drains++; // racy increments may be lost; the sweeper only needs to see a change
         StringBuilder header = new StringBuilder(first);
         String next;
         for (int i = 1; i < MAX_PER_REQUEST && (next = pending.poll()) != null; i++) {

@@ -675,6 +675,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             return;
         }
         closed = true;
+        acks.close(); // what is left goes below
         pools.forEach(ConnectionPool::close); // breaks the waits of calls in progress: SpaceClosedException
         synchronized (this) {
             if (asyncCalls != null) {
@@ -1217,8 +1218,8 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
         /**
          * No token, 3 s network allowance, 1 s connect timeout, 10 000 queued notifications, 32 idle connections,
-         * and take confirmations sent alone after 20 ms without another request (they usually ride on the next one;
-         * a shorter delay wakes a timer thread on every take, which costs more than it saves), operations as frames
+         * and take confirmations sent alone after 20 ms without another request (they usually ride on the next one),
+         * operations as frames
          * where the server offers them.
          */
         public static Options defaults() {
