@@ -35,7 +35,8 @@ final class AckSweeper implements Runnable {
     private volatile boolean dormant = true;
     /** False for a sweeper whose sweeps a test calls itself. */
     private final boolean ticking;
-    private Thread thread;
+    /** Read by {@link #pending()} on any thread: volatile, or a wake-up could go to null and be lost. */
+    private volatile Thread thread;
 
     AckSweeper(boolean ticking) {
         this.ticking = ticking;

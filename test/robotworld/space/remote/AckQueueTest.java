@@ -94,6 +94,26 @@ class AckQueueTest {
     }
 
     @Test
+    void aSweeperParkedAfterAQuietSecondWakesForTheNextConfirmation() throws Exception {
+        AckQueue acks = new AckQueue(timer, 20_000, sentAlone::add, new AckSweeper(true));
+        acks.add("c1");
+        awaitSent(1);
+        Thread.sleep(1_500); // a second without confirmations: the sweeper parks for good
+        acks.add("c2");
+        awaitSent(2); // within 5 s: only if the confirmation woke the sweeper
+        assertEquals(List.of("c1", "c2"), sentAlone);
+        acks.close();
+    }
+
+    private void awaitSent(int count) throws InterruptedException {
+        long start = System.nanoTime();
+        while (sentAlone.size() < count && System.nanoTime() - start < TimeUnit.SECONDS.toNanos(5)) {
+            Thread.sleep(1);
+        }
+        assertEquals(count, sentAlone.size(), "sent alone in time");
+    }
+
+    @Test
     void withoutADelayAConfirmationIsSentAtOnce() throws Exception {
         AckQueue acks = new AckQueue(timer, 0, sentAlone::add, new AckSweeper(false));
         acks.add("c1");
