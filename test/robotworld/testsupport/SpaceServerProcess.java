@@ -29,12 +29,26 @@ public final class SpaceServerProcess implements AutoCloseable {
         this.uri = uri;
     }
 
-    /** Starts a server with the JVM options {@code jvm} (e.g. {@code -Xmx1g}); returns once it listens. */
+    /** Not a JVM option: {@code --prepend-classes=<dir>} puts a directory of classes before this build's. */
+    public static final String PREPEND_CLASSES = "--prepend-classes=";
+
+    /**
+     * Starts a server with the JVM options {@code jvm} (e.g. {@code -Xmx1g}, or {@link #PREPEND_CLASSES}); returns
+     * once it listens.
+     */
     public static SpaceServerProcess start(List<String> jvm) throws IOException {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-        command.addAll(jvm);
-        command.addAll(List.of("-cp", System.getProperty("java.class.path"), "robotworld.explorer.cli.Rwe", "space",
+        String classPath = System.getProperty("java.class.path");
+        for (String option : jvm) {
+            if (option.startsWith(PREPEND_CLASSES)) {
+                // another build's classes first: an A/B trial of a code change in one benchmark run
+                classPath = option.substring(PREPEND_CLASSES.length()) + java.io.File.pathSeparator + classPath;
+            } else {
+                command.add(option);
+            }
+        }
+        command.addAll(List.of("-cp", classPath, "robotworld.explorer.cli.Rwe", "space",
                 "--port", "0"));
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         BufferedReader out = new BufferedReader(new InputStreamReader(process.getInputStream(),
