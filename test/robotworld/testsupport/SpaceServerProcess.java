@@ -31,16 +31,27 @@ public final class SpaceServerProcess implements AutoCloseable {
 
     /** Not a JVM option: {@code --prepend-classes=<dir>} puts a directory of classes before this build's. */
     public static final String PREPEND_CLASSES = "--prepend-classes=";
+    /** Not a JVM option: {@code --cpus=<list>} runs the server under {@code taskset -c <list>}. */
+    public static final String ON_CPUS = "--cpus=";
 
     /**
-     * Starts a server with the JVM options {@code jvm} (e.g. {@code -Xmx1g}, or {@link #PREPEND_CLASSES}); returns
+     * Starts a server with the JVM options {@code jvm} (e.g. {@code -Xmx1g}, or {@link #PREPEND_CLASSES}, {@link
+     * #ON_CPUS}); returns
      * once it listens.
      */
     public static SpaceServerProcess start(List<String> jvm) throws IOException {
         List<String> command = new ArrayList<>();
+        for (String option : jvm) {
+            if (option.startsWith(ON_CPUS)) {
+                command.addAll(List.of("taskset", "-c", option.substring(ON_CPUS.length())));
+            }
+        }
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         String classPath = System.getProperty("java.class.path");
         for (String option : jvm) {
+            if (option.startsWith(ON_CPUS)) {
+                continue;
+            }
             if (option.startsWith(PREPEND_CLASSES)) {
                 // another build's classes first: an A/B trial of a code change in one benchmark run
                 classPath = option.substring(PREPEND_CLASSES.length()) + java.io.File.pathSeparator + classPath;
