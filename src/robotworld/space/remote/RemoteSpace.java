@@ -14,6 +14,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -141,7 +142,11 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         }
         this.pools = List.copyOf(perServer);
         this.pool = pools.get(0);
-        this.timer = Executors.newSingleThreadScheduledExecutor(daemonThreads("space-client-timer"));
+        ScheduledThreadPoolExecutor timerThread = new ScheduledThreadPoolExecutor(1, daemonThreads("space-client-timer"));
+        // started now, not on its first task (which may come minutes later): a space's threads live exactly as
+        // long as the space, so a program (or a test) that counts threads sees none appear after the fact
+        timerThread.prestartCoreThread();
+        this.timer = Executors.unconfigurableScheduledExecutorService(timerThread);
         this.delivery = Executors.newCachedThreadPool(daemonThreads("space-client-notify"));
         this.acks = new AckQueue(timer, options.ackDelayMicros(), this::sendAcks);
         this.events = new EventStream(this);
