@@ -51,8 +51,10 @@ class WaitsHoldNoThreadsTest {
             assertEquals(WAITING, client.describeContainer(queue).blocked(), "all takes wait in the space");
             int serverThreads = threads("space-server");
             int clientThreads = threads("space-client");
-            assertTrue(serverThreads < serverThreadsBefore + 40, WAITING + " waiting takes, but the server went from "
-                    + serverThreadsBefore + " to " + serverThreads + " threads");
+            // a thread per wait would add WAITING; what may be added is the pool threads Jetty starts to take the
+            // burst of WAITING new connections (they end after 10 s idle), more of them on a busy machine
+            assertTrue(serverThreads < serverThreadsBefore + WAITING / 3, WAITING + " waiting takes, but the server"
+                    + " went from " + serverThreadsBefore + " to " + serverThreads + " threads");
             assertTrue(clientThreads <= 6, WAITING + " waiting takes, but the clients have " + clientThreads
                     + " threads");
             for (int i = 0; i < WAITING; i++) {
