@@ -36,29 +36,24 @@ public final class SpaceServerProcess implements AutoCloseable {
 
     /**
      * Starts a server with the JVM options {@code jvm} (e.g. {@code -Xmx1g}, or {@link #PREPEND_CLASSES}, {@link
-     * #ON_CPUS}); returns
-     * once it listens.
+     * #ON_CPUS}); returns once it listens.
      */
     public static SpaceServerProcess start(List<String> jvm) throws IOException {
         List<String> command = new ArrayList<>();
-        for (String option : jvm) {
-            if (option.startsWith(ON_CPUS)) {
-                command.addAll(List.of("taskset", "-c", option.substring(ON_CPUS.length())));
-            }
-        }
-        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        List<String> jvmOptions = new ArrayList<>();
         String classPath = System.getProperty("java.class.path");
         for (String option : jvm) {
             if (option.startsWith(ON_CPUS)) {
-                continue;
-            }
-            if (option.startsWith(PREPEND_CLASSES)) {
+                command.addAll(List.of("taskset", "-c", option.substring(ON_CPUS.length())));
+            } else if (option.startsWith(PREPEND_CLASSES)) {
                 // another build's classes first: an A/B trial of a code change in one benchmark run
                 classPath = option.substring(PREPEND_CLASSES.length()) + java.io.File.pathSeparator + classPath;
             } else {
-                command.add(option);
+                jvmOptions.add(option);
             }
         }
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(jvmOptions);
         command.addAll(List.of("-cp", classPath, "robotworld.explorer.cli.Rwe", "space",
                 "--port", "0"));
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();

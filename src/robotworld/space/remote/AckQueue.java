@@ -21,6 +21,7 @@ final class AckQueue {
     private final AtomicBoolean flushScheduled = new AtomicBoolean();
     private final ScheduledExecutorService timer;
     private final long delayMicros;
+    private final long delayNanos;
     private final Predicate<String> flusher;
     private final AckSweeper sweeper;
     /** How many times requests took confirmations: the sweeper's sign that they are moving. */
@@ -43,6 +44,7 @@ final class AckQueue {
         this.sweeper = sweeper;
         this.timer = timer;
         this.delayMicros = delayMicros;
+        this.delayNanos = TimeUnit.MICROSECONDS.toNanos(delayMicros);
         this.flusher = flusher;
         if (delayMicros > 0) {
             sweeper.register(this);
@@ -77,7 +79,7 @@ final class AckQueue {
             seen = true; // newly waiting, or requests took some since the last look: count from now
             seenSince = now;
             seenDrains = drainsNow;
-        } else if (now - seenSince >= TimeUnit.MICROSECONDS.toNanos(delayMicros)) {
+        } else if (now - seenSince >= delayNanos) {
             seen = false;
             scheduleFlush(0);
         }
@@ -107,10 +109,6 @@ final class AckQueue {
             }
             scheduleFlush(TimeUnit.MILLISECONDS.toMicros(20));
         }
-    }
-
-    boolean isEmpty() {
-        return pending.isEmpty();
     }
 
     private void scheduleFlush(long micros) {

@@ -15,15 +15,15 @@ import org.slf4j.LoggerFactory;
  * <p>Why not each space's own timer: scheduling a flush after every take woke that space's timer thread twice per
  * quiet spell (once to take the new task, once to run it), even though the next request nearly always carried the
  * confirmation first. With 100 busy clients that was about 10 000 thread wake-ups a second and a quarter of the
- * clients' CPU per module call. The sweeper wakes {@value #TICK_MILLIS}-ms-wise while any confirmation is
- * outstanding somewhere in the JVM, and parks for good after a second without any, until the next one.
+ * clients' CPU per module call. The sweeper wakes every {@value #TICK_MILLIS} ms while a confirmation is
+ * outstanding anywhere in the JVM, and parks after a second without any, until the next one wakes it.
  *
  * <p>The sweeper never does I/O: a queue that has to be flushed hands the flush to its space's timer. It never
  * dies: a failing queue is logged and skipped.
  */
 final class AckSweeper implements Runnable {
 
-    static final long TICK_MILLIS = 5;
+    private static final long TICK_MILLIS = 5;
     private static final long TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(TICK_MILLIS);
     /** How long the sweeper keeps ticking without any confirmation outstanding before it parks. */
     private static final long DORMANT_AFTER_NANOS = TimeUnit.SECONDS.toNanos(1);

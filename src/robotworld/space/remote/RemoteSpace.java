@@ -1224,8 +1224,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         /**
          * No token, 3 s network allowance, 1 s connect timeout, 10 000 queued notifications, 32 idle connections,
          * and take confirmations sent alone after 20 ms without another request (they usually ride on the next one),
-         * operations as frames
-         * where the server offers them.
+         * operations as frames where the server offers them.
          */
         public static Options defaults() {
             return new Options(null, 3_000, 1_000, 10_000, 32, 20_000, true);
