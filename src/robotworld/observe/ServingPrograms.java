@@ -96,8 +96,10 @@ final class ServingPrograms {
             program.heardNanos = nanos; // silence is counted from when it was first read
             program.heardAt = at;
             programs.put(beat.id(), program);
-        } else if (beat.sequence() == program.sequence) {
-            return; // the same heartbeat again (read once more after a subscription was renewed)
+        } else if (beat.sequence() <= program.sequence) {
+            // the same heartbeat again (read once more after a subscription was renewed), or an older one that
+            // arrived late: a program's heartbeats count up, and a late one must not undo the news of a newer
+            return;
         }
         program.sequence = beat.sequence();
         // what it served stays its: a closing program releases its actuators before its last heartbeat

@@ -19,6 +19,7 @@ import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.ReentrantLock;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robotworld.space.Capi;
@@ -32,6 +33,7 @@ import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
 import robotworld.space.Selector;
 import robotworld.space.SpaceException;
+import robotworld.space.SpaceInterruptedException;
 import robotworld.space.Subscription;
 import robotworld.space.SubscriptionEnd;
 import robotworld.space.Timeout;
@@ -88,6 +90,12 @@ public final class SafetySupervisor implements AutoCloseable {
     private final Map<String, Liveliness> commanders = new ConcurrentHashMap<>();
     private final Set<String> handledRequests = Collections.synchronizedSet(new LinkedHashSet<>());
     private final AtomicLong sequence = new AtomicLong();
+    /**
+     * Held while a heartbeat is sent: the two link threads must not send two at once, or the older could reach the
+     * space after the newer and replace it (a closing program's last heartbeat replaced by a periodic one that was
+     * still under way, so the program would look silent instead of ended).
+     */
+    private final ReentrantLock sendingHeartbeat = new ReentrantLock();
     private final List<StopRecord> recent = new CopyOnWriteArrayList<>();
     private volatile Duration defaultCommandTimeout;
     private volatile long lastContactNanos = System.nanoTime();
@@ -314,7 +322,8 @@ public final class SafetySupervisor implements AutoCloseable {
                     }
                 });
                 link.shutdown();
-                link.awaitTermination(2 * CLOSE_GRACE_MILLIS, TimeUnit.MILLISECONDS);
+                // the last heartbeat may wait a grace for one under way, then take a grace of its own
+                link.awaitTermination(3 * CLOSE_GRACE_MILLIS, TimeUnit.MILLISECONDS);
             } catch (java.util.concurrent.RejectedExecutionException e) {
                 // already shut down
             } catch (InterruptedException e) {
@@ -409,6 +418,25 @@ public final class SafetySupervisor implements AutoCloseable {
     }
 
     private void sendHeartbeat(boolean ended, Timeout timeout) {
+        boolean locked = false;
+        try {
+            // a heartbeat under way ends within its own timeout; the last one waits for it at most its own grace,
+            // then goes anyway (readers also ignore a heartbeat older than one they have seen)
+            locked = sendingHeartbeat.tryLock(timeout.millis(), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new SpaceInterruptedException("interrupted before sending the heartbeat of " + ownId, e);
+        }
+        try {
+            sendHeartbeatNow(ended, timeout);
+        } finally {
+            if (locked) {
+                sendingHeartbeat.unlock();
+            }
+        }
+    }
+
+    private void sendHeartbeatNow(boolean ended, Timeout timeout) {
         List<Heartbeat.ModuleName> modules;
         synchronized (served) {
             modules = List.copyOf(served);

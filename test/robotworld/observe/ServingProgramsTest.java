@@ -68,6 +68,15 @@ class ServingProgramsTest {
     }
 
     @Test
+    void anOlderHeartbeatArrivingAfterTheLastDoesNotUndoTheEnd() {
+        programs.heard(beat("room-pc#1", 1, false, new Heartbeat.ModuleName("Room", "Fan")), Instant.EPOCH, 0, true);
+        programs.heard(beat("room-pc#1", 3, true), Instant.EPOCH, 100 * MS, true);
+        programs.heard(beat("room-pc#1", 2, false, new Heartbeat.ModuleName("Room", "Fan")), Instant.EPOCH, 110 * MS,
+                true); // sent before the last one, delivered after it
+        assertEquals(Liveness.State.ENDED, programs.verdict("Room", 60_000 * MS).state());
+    }
+
+    @Test
     void aProgramRestartedUnderANewIdTakesOverFromTheDeadOne() {
         programs.heard(beat("robot-pc#1", 1, false, MOTOR, BUMPER), Instant.EPOCH, 0, true);
         assertEquals(Liveness.State.SILENT, programs.verdict("Robot", 3_000 * MS).state());
