@@ -5,6 +5,7 @@ import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.EnumSet;
@@ -31,6 +32,7 @@ import robotworld.space.Tuple;
 import robotworld.space.server.SpaceServer;
 import redis.clients.jedis.Jedis;
 import robotworld.testsupport.CpuPlacement;
+import robotworld.testsupport.JitWarmUp;
 import robotworld.testsupport.RedisPeer;
 import robotworld.testsupport.SpaceServerProcess;
 import robotworld.testsupport.TcpEcho;
@@ -84,6 +86,8 @@ public final class RemoteSpaceBenchmark {
             System.out.printf("%nLatency, %s:%n", CpuPlacement.describe());
             List<Row> rows = new ArrayList<>();
             warmUp(uri, echo, redis);
+            long compiledBefore = JitWarmUp.compileMillis();
+            long measuredFrom = System.nanoTime();
             Row tcp = measure("raw TCP loopback round trip (16-byte echo)", echo, () -> tcpRoundTrips(echo));
             rows.add(tcp);
             rows.add(measure("remote write+take cycle (2 requests)", echo, () -> writeTakeCycles(uri)));
@@ -108,6 +112,8 @@ public final class RemoteSpaceBenchmark {
             rows.add(measure("one trivial request (describe), java.net.http.HttpClient", echo,
                     () -> jdkHttpCalls(uri)));
             print(rows);
+            System.out.printf("JIT compile time while these rows were measured: %d ms in %.0f s%n",
+                    JitWarmUp.compileMillis() - compiledBefore, (System.nanoTime() - measuredFrom) / 1e9);
             System.out.printf("%n%s: request/answer p50 = %.1f x the TCP round trip measured just before it, median"
                     + " of %d runs (target <= %.0f: %s); notification p50 = %.0f us (target <= 300: %s)%n",
                     CpuPlacement.describe(), call.ratio(), RUNS, TARGET_RATIO,
@@ -690,20 +696,31 @@ public final class RemoteSpaceBenchmark {
     private record Row(String name, double p50, double p99, double ratio, List<Double> runP50s, List<Double> tcpP50s) {
     }
 
+    /**
+     * Warms every scenario up for at least {@code bench.warmupSeconds} (15), then on until the JIT has settled
+     * ({@link JitWarmUp}: a pass of all scenarios spends at most 2 % of its time compiling, twice in a row), at most
+     * {@code bench.warmupMaxSeconds} (120); the figures are those of a server that has been running a while.
+     */
     private static void warmUp(URI uri, TcpEcho echo, RedisPeer redis) throws Exception {
-        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.getLong("bench.warmupSeconds", 15));
-        while (System.nanoTime() < until) {
-            tcpRoundTrips(echo);
-            if (redis != null) {
-                redisCycles(redis);
-            }
-            writeTakeCycles(uri);
-            requestAnswerCycles(uri, false);
-            requestAnswerCycles(uri, true);
-            requestAnswerCycles(uri, true, HTTP); // both paths warm: the HTTP one is measured too
-            threadlessModuleCycles(uri);
-            notificationLatencies(uri);
+        JitWarmUp.Outcome outcome = JitWarmUp.run(Duration.ofSeconds(Long.getLong("bench.warmupSeconds", 15)),
+                Duration.ofSeconds(Long.getLong("bench.warmupMaxSeconds", 120)), 0.02,
+                () -> warmUpPass(uri, echo, redis));
+        System.out.printf("%s (%s)%n", outcome, CpuPlacement.describe());
+    }
+
+    private static void warmUpPass(URI uri, TcpEcho echo, RedisPeer redis) throws Exception {
+        tcpRoundTrips(echo);
+        if (redis != null) {
+            redisCycles(redis);
         }
+        writeTakeCycles(uri);
+        requestAnswerCycles(uri, false);
+        requestAnswerCycles(uri, true);
+        requestAnswerCycles(uri, true, HTTP); // both paths warm: the HTTP one is measured too
+        threadlessModuleCycles(uri);
+        notificationLatencies(uri);
+        describeCalls(uri);
+        jdkHttpCalls(uri);
     }
 
     /**
