@@ -83,6 +83,15 @@ public final class LinkFaultProxy implements AutoCloseable {
         pipe.start();
     }
 
+    /** What clients sent through the proxy so far (all connections, in arrival order per read). */
+    public byte[] clientBytes() {
+        synchronized (sent) {
+            return sent.toByteArray();
+        }
+    }
+
+    private final java.io.ByteArrayOutputStream sent = new java.io.ByteArrayOutputStream();
+
     /** How many connections clients have made. */
     public int connections() {
         return accepted;
@@ -152,6 +161,11 @@ public final class LinkFaultProxy implements AutoCloseable {
                     int n;
                     while ((n = in.read(buffer)) >= 0) {
                         if (!silent && out != null) {
+                            if (from == client) {
+                                synchronized (sent) {
+                                    sent.write(buffer, 0, n);
+                                }
+                            }
                             out.write(buffer, 0, n);
                             out.flush();
                         }

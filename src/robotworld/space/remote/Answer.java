@@ -37,6 +37,8 @@ final class Answer {
     long maxWait = -1;
     /** The frame version the server speaks besides HTTP (0: none). */
     long frames;
+    /** The version of the binary form of bodies the server reads in frames (0: none). */
+    long binary;
 
     static Answer parse(WireContext wire, byte[] body) {
         Answer answer = new Answer();
@@ -64,6 +66,7 @@ final class Answer {
                     case "space" -> answer.space = in.readString("space");
                     case "maxWait" -> answer.maxWait = in.readLong("maxWait");
                     case "frames" -> answer.frames = in.readLong("frames");
+                    case "binary" -> answer.binary = in.readLong("binary");
                     default -> in.skipValue();
                 }
             }

@@ -188,7 +188,8 @@ final class AsyncCalls implements Runnable {
     interface Request {
         String operation();
 
-        byte[] encode(String callId, Timeout wait);
+        /** The body, in the binary form if {@code binary} (else JSON). */
+        byte[] encode(String callId, Timeout wait, boolean binary);
 
         /** The container the call runs on (a shift-then-take's shift), named when the call is settled. */
         ContainerRef container();
@@ -218,8 +219,8 @@ final class AsyncCalls implements Runnable {
         private SelectionKey key;
         private ByteBuffer out;
         private ByteBuffer in = ByteBuffer.allocate(4096);
-        /** The request body of this attempt (its bytes on the wire depend on the connection). */
-        private byte[] body;
+        /** The wait left for this attempt; its body is written once the connection is known. */
+        private Timeout waitLeft;
         /** This call's connection carries frames. */
         private boolean framed;
         /** Its answer starts with the 101 of the upgrade to frames sent before the request. */
@@ -348,7 +349,7 @@ final class AsyncCalls implements Runnable {
             if (composite) {
                 owner.waiting(takeRef, true);
             }
-            body = request.encode(callId, wait);
+            waitLeft = wait;
             ackHeader = owner.acks().drain();
             in.clear();
             sent = false;
@@ -365,6 +366,7 @@ final class AsyncCalls implements Runnable {
         private void encode(boolean framedConnection, boolean upgrade) {
             framed = framedConnection;
             awaitingUpgrade = upgrade;
+            byte[] body = request.encode(callId, waitLeft, framed && owner.binaryBodies(request.operation()));
             byte[] bytes = framed
                     ? HttpConnection.operationFrame(connectedTo, request.operation(), ackHeader, body, body.length)
                     : owner.requestBytes(request.operation(), ackHeader, body);

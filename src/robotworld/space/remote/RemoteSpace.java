@@ -42,6 +42,7 @@ import robotworld.space.SpaceUnavailableException;
 import robotworld.space.Subscription;
 import robotworld.space.SubscriptionEnd;
 import robotworld.space.Timeout;
+import robotworld.space.wire.BinaryWire;
 import robotworld.space.wire.CrefMapping;
 import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireContext;
@@ -120,6 +121,8 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     private AsyncCalls asyncCalls;
     private volatile URI spaceUri;
     volatile long serverMaxWaitMillis = 20_000;
+    /** The server reads the binary form of the hot operations' bodies in frames, and this client may use it. */
+    private volatile boolean binaryBodies;
     private volatile boolean closed;
 
     private RemoteSpace(List<URI> urls, Options options) {
@@ -509,12 +512,12 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             }
 
             @Override
-            public byte[] encode(String callId, Timeout wait) {
+            public byte[] encode(String callId, Timeout wait, boolean binary) {
                 return RemoteSpace.this.encode((out, id, w) -> {
                     out.cref("container", shiftTo).field("timeout", w.millis()).items(items).field("call", id);
                     out.field("take").startObject().cref("container", takeFrom).selectors(selectors)
                             .field("call", takeId(id)).endObject();
-                }, callId, wait);
+                }, callId, wait, binary);
             }
         };
         AsyncCalls calls = asyncCalls();
@@ -534,9 +537,9 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             }
 
             @Override
-            public byte[] encode(String callId, Timeout wait) {
+            public byte[] encode(String callId, Timeout wait, boolean binary) {
                 return RemoteSpace.this.encode((out, id, w) -> out.cref("container", container)
-                        .field("timeout", w.millis()).selectors(selectors).field("call", id), callId, wait);
+                        .field("timeout", w.millis()).selectors(selectors).field("call", id), callId, wait, binary);
             }
         };
     }
@@ -578,6 +581,11 @@ public final class RemoteSpace implements Capi, AsyncTakes {
 
     ScheduledExecutorService timer() {
         return timer;
+    }
+
+    /** Whether a request of {@code operation} in a frame goes in the binary form (the server reads it). */
+    boolean binaryBodies(String operation) {
+        return binaryBodies && BinaryWire.OPERATIONS.contains(operation);
     }
 
     /** Whether new connections to the current server carry operations as frames. */
@@ -777,7 +785,6 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             String callId = needsId ? clientId + ":" + lastCall.incrementAndGet() : null;
             String ref = callId == null ? null : settleRef(callId, on);
             String takeRef = callId == null ? null : settleRef(takeId(callId), takeOn);
-            byte[] request = encode(body, callId, wait);
             long serverWait = wait.isInfinite() ? serverMaxWaitMillis : Math.min(wait.millis(), serverMaxWaitMillis);
             long readDeadline = now + TimeUnit.MILLISECONDS.toNanos(serverWait) + allowance;
             Endpoint used = endpoint; // the server of this attempt (a failover may change it meanwhile)
@@ -793,6 +800,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
             }
             try {
                 connection = pool.borrow(infinite ? readDeadline : Math.min(readDeadline, networkDeadline));
+                byte[] request = encode(body, callId, wait, connection.framed && binaryBodies(operation));
                 connection.sendOperation(used, operation, ackHeader, request, request.length);
                 sent = true;
                 HttpConnection.Response response = connection.receive(readDeadline, waits ? RemoteSpace::checkInterrupt
@@ -1065,6 +1073,7 @@ public final class RemoteSpace implements Capi, AsyncTakes {
                 if (answer.frames >= 1 && options.frames()) {
                     // the servers of one space run the same version: all of them take frames
                     pools.forEach(ConnectionPool::useFrames);
+                    binaryBodies = answer.binary >= BinaryWire.VERSION && options.binary();
                 }
                 return;
             } catch (IOException e) {
@@ -1102,8 +1111,13 @@ public final class RemoteSpace implements Capi, AsyncTakes {
     }
 
     private byte[] encode(Body body, String callId, Timeout wait) {
+        return encode(body, callId, wait, false);
+    }
+
+    /** A request body: in the binary form if {@code binary}, else JSON. */
+    private byte[] encode(Body body, String callId, Timeout wait, boolean binary) {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream(128);
-        try (WireWriter out = wire.writer(bytes)) {
+        try (WireWriter out = binary ? WireWriter.binary(wire.crefs(), bytes) : wire.writer(bytes)) {
             out.startObject();
             body.write(out, callId, wait);
             out.endObject();
@@ -1209,9 +1223,11 @@ public final class RemoteSpace implements Capi, AsyncTakes {
      * @param ackDelayMicros         how long a take's confirmation may wait for another request to ride on
      * @param frames                 whether operations go as frames to a server that offers them (the same
      *                               requests without HTTP's request line and headers); false: always HTTP
+     * @param binary                 whether the bodies of the hot operations go in the compact binary form to a
+     *                               server that reads it (in frames only); false: always JSON
      */
     public record Options(String token, long networkAllowanceMillis, int connectTimeoutMillis, int notificationQueue,
-                          int maxIdleConnections, long ackDelayMicros, boolean frames) {
+                          int maxIdleConnections, long ackDelayMicros, boolean frames, boolean binary) {
 
         /** Validates the values. */
         public Options {
@@ -1224,52 +1240,59 @@ public final class RemoteSpace implements Capi, AsyncTakes {
         /**
          * No token, 3 s network allowance, 1 s connect timeout, 10 000 queued notifications, 32 idle connections,
          * and take confirmations sent alone after 20 ms without another request (they usually ride on the next one),
-         * operations as frames where the server offers them.
+         * operations as frames where the server offers them, with the hot operations' bodies in the binary form where
+         * the server reads it.
          */
         public static Options defaults() {
-            return new Options(null, 3_000, 1_000, 10_000, 32, 20_000, true);
+            return new Options(null, 3_000, 1_000, 10_000, 32, 20_000, true, true);
         }
 
         /** With a bearer token. */
         public Options token(String newToken) {
             return new Options(newToken, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
-                    maxIdleConnections, ackDelayMicros, frames);
+                    maxIdleConnections, ackDelayMicros, frames, binary);
         }
 
         /** With another network allowance. */
         public Options networkAllowanceMillis(long millis) {
             return new Options(token, millis, connectTimeoutMillis, notificationQueue, maxIdleConnections,
-                    ackDelayMicros, frames);
+                    ackDelayMicros, frames, binary);
         }
 
         /** With another per-subscription notification queue. */
         public Options notificationQueue(int capacity) {
             return new Options(token, networkAllowanceMillis, connectTimeoutMillis, capacity, maxIdleConnections,
-                    ackDelayMicros, frames);
+                    ackDelayMicros, frames, binary);
         }
 
         /** With another connect timeout. */
         public Options connectTimeoutMillis(int millis) {
             return new Options(token, networkAllowanceMillis, millis, notificationQueue, maxIdleConnections,
-                    ackDelayMicros, frames);
+                    ackDelayMicros, frames, binary);
         }
 
         /** With another number of idle keep-alive connections. */
         public Options maxIdleConnections(int connections) {
             return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue, connections,
-                    ackDelayMicros, frames);
+                    ackDelayMicros, frames, binary);
         }
 
         /** With operations as frames where the server offers them (true), or always as HTTP requests (false). */
         public Options frames(boolean useFrames) {
             return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
-                    maxIdleConnections, ackDelayMicros, useFrames);
+                    maxIdleConnections, ackDelayMicros, useFrames, binary);
+        }
+
+        /** With the hot operations' bodies in the binary form where the server reads it (true), or JSON (false). */
+        public Options binary(boolean useBinary) {
+            return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
+                    maxIdleConnections, ackDelayMicros, frames, useBinary);
         }
 
         /** With another delay before a take's confirmation is sent on its own. */
         public Options ackDelayMicros(long micros) {
             return new Options(token, networkAllowanceMillis, connectTimeoutMillis, notificationQueue,
-                    maxIdleConnections, micros, frames);
+                    maxIdleConnections, micros, frames, binary);
         }
     }
 }

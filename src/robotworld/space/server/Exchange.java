@@ -25,6 +25,7 @@ abstract class Exchange {
 
     private final WireContext wire;
     private final AtomicBoolean answered = new AtomicBoolean();
+    private boolean binary;
     /** The address whose waiting places this request uses, or null (a request with the token). */
     private final InetAddress client;
 
@@ -40,7 +41,12 @@ abstract class Exchange {
 
     /** A new answer body, its object already opened. */
     Body body() {
-        return new Body(wire);
+        return new Body(wire, binary);
+    }
+
+    /** The request came in the binary form: so does a successful answer (errors stay JSON). */
+    void answerInBinary() {
+        binary = true;
     }
 
     /** Closes the object of {@code body} and sends it with status 200. */
@@ -117,8 +123,8 @@ abstract class Exchange {
         final ByteArrayOutputStream bytes = new ByteArrayOutputStream(128);
         final WireWriter out;
 
-        Body(WireContext wire) {
-            out = wire.writer(bytes);
+        Body(WireContext wire, boolean binary) {
+            out = binary ? WireWriter.binary(wire.crefs(), bytes) : wire.writer(bytes);
             out.startObject();
         }
     }

@@ -16,6 +16,7 @@ import robotworld.space.SpaceException;
 import robotworld.space.SpaceTimeoutException;
 import robotworld.space.Subscription;
 import robotworld.space.Timeout;
+import robotworld.space.wire.BinaryWire;
 import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireError;
 import robotworld.space.wire.WireReader;
@@ -48,6 +49,16 @@ final class SpaceOperations {
         acknowledge(acks);
         if (state.stopping && !name.equals("ack") && !name.equals("cancel")) {
             throw new ErrorAnswer(WireError.STOPPING, "the server is stopping; the operation had no effect");
+        }
+        if (body.length > 0 && body[0] == BinaryWire.MARKER) {
+            if (!(exchange instanceof FrameExchange)) {
+                throw new ErrorAnswer(WireError.BAD_REQUEST, "a binary body travels only in a frame; send JSON");
+            }
+            if (!BinaryWire.OPERATIONS.contains(name)) {
+                throw new ErrorAnswer(WireError.BAD_REQUEST, "operation '" + Exchange.truncate(name, 40)
+                        + "' is not carried in the binary form; send it as JSON");
+            }
+            exchange.answerInBinary();
         }
         RequestFields fields;
         try (WireReader in = state.wire.reader(body, 0, body.length)) {

@@ -15,6 +15,7 @@ import jakarta.servlet.http.HttpServletRequest;
 import jakarta.servlet.http.HttpServletResponse;
 
 import robotworld.space.ClusterHealth;
+import robotworld.space.wire.BinaryWire;
 import robotworld.space.wire.Wire;
 import robotworld.space.wire.WireError;
 import robotworld.space.wire.WireFormatException;
@@ -95,6 +96,7 @@ final class SpaceServlet extends HttpServlet {
                     .field("maxDepth", state.wire.limits().maxDepth())
                     .field("maxCount", state.wire.limits().maxCount())
                     .field("frames", 1) // the frame version this server also speaks on its port
+                    .field("binary", BinaryWire.VERSION) // and the binary form of bodies it reads in frames
                     .endObject();
         }
         send(response, 200, body);

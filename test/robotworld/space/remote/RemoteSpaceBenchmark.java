@@ -58,6 +58,8 @@ public final class RemoteSpaceBenchmark {
 
     /** Clients that send operations as HTTP requests, as before frames: the step measured beside them. */
     private static final RemoteSpace.Options HTTP = RemoteSpace.Options.defaults().frames(false);
+    /** Clients that send frames with JSON bodies, as before the binary form: the step measured beside them. */
+    private static final RemoteSpace.Options JSON_BODIES = RemoteSpace.Options.defaults().binary(false);
 
     private RemoteSpaceBenchmark() {
     }
@@ -96,6 +98,8 @@ public final class RemoteSpaceBenchmark {
             Row call = measure("request/answer cycle of a remote module call (A 1, B 1)", echo,
                     () -> requestAnswerCycles(uri, true));
             rows.add(call);
+            rows.add(measure("the same, bodies as JSON instead of binary", echo,
+                    () -> requestAnswerCycles(uri, true, JSON_BODIES)));
             rows.add(measure("the same, operations as HTTP requests instead of frames", echo,
                     () -> requestAnswerCycles(uri, true, HTTP)));
             rows.add(measure("module-call cycle, B waiting without a thread (shiftThenTakeLater)", echo,
@@ -493,10 +497,11 @@ public final class RemoteSpaceBenchmark {
     private static void concurrentPairs(URI uri, ProcessHandle server, RedisPeer redis, int warmUpRuns)
             throws Exception {
         System.out.printf("%n%d concurrent request/answer pairs (module-call cycles), %d ms per run, ours (frames,"
-                + " then HTTP) and Redis alternately:%n", PAIRS, PAIR_MILLIS);
+                + " then frames with JSON bodies, then HTTP) and Redis alternately:%n", PAIRS, PAIR_MILLIS);
         List<Way> ways = new ArrayList<>(List.of(
                 new Way("space", () -> pairsRun(uri, server, null, RemoteSpace.Options.defaults())),
-                new Way("over HTTP", () -> pairsRun(uri, server, null, HTTP))));
+                new Way("over HTTP", () -> pairsRun(uri, server, null, HTTP)),
+                new Way("JSON bodies", () -> pairsRun(uri, server, null, JSON_BODIES))));
         if (redis != null) {
             ways.add(new Way("Redis", () -> pairsRun(uri, redisProcess(redis), redis, null)));
         }
@@ -506,8 +511,11 @@ public final class RemoteSpaceBenchmark {
         PairsRun http = medians.get(1);
         System.out.printf("  median: space over HTTP %s (frames: %.2f x its calls/s)%n", http,
                 space.callsPerSecond / http.callsPerSecond);
+        PairsRun json = medians.get(2);
+        System.out.printf("  median: space with JSON bodies %s (binary: %.2f x its calls/s)%n", json,
+                space.callsPerSecond / json.callsPerSecond);
         if (redis != null) {
-            PairsRun r = medians.get(2);
+            PairsRun r = medians.get(3);
             System.out.printf("  median: Redis %s%n", r);
             System.out.printf("  %d pairs: space %.2f x Redis calls/s (target >= 1: %s), p99 %.2f x Redis p99 (target"
                     + " <= 1: %s)%n", PAIRS, space.callsPerSecond / r.callsPerSecond,
@@ -716,7 +724,8 @@ public final class RemoteSpaceBenchmark {
         writeTakeCycles(uri);
         requestAnswerCycles(uri, false);
         requestAnswerCycles(uri, true);
-        requestAnswerCycles(uri, true, HTTP); // both paths warm: the HTTP one is measured too
+        requestAnswerCycles(uri, true, JSON_BODIES); // every path warm: each is measured too
+        requestAnswerCycles(uri, true, HTTP);
         threadlessModuleCycles(uri);
         notificationLatencies(uri);
         describeCalls(uri);

@@ -17,7 +17,8 @@ import robotworld.space.server.SpaceServer;
  * The module-call cycle of one pair ({@code writeThenTake} / {@code shiftThenTake}) against a server in this JVM,
  * for comparing two builds of the client and server: run it alternately with each build's classes first on the
  * class path, under {@code taskset -c 0} (see {@code docs/benchmarks.md}). Prints the p50 of each round after a
- * warm-up round of 20 000 cycles. Arguments: rounds (including the warm-up), a label.
+ * warm-up round of 20 000 cycles. Arguments: rounds (including the warm-up), a label. {@code -Dcycle.binary=false}:
+ * the bodies as JSON.
  */
 public final class SingleCycleRun {
 
@@ -34,13 +35,18 @@ public final class SingleCycleRun {
                 if (round > 0) {
                     medians.append(String.format(" %.1f", samples[samples.length / 2] / 1e3));
                 }
+                if (Boolean.getBoolean("cycle.trace")) { // each round's p50 and when it ended, for a profile's time line
+                    System.err.printf("%d %.1f%n", System.currentTimeMillis(), samples[samples.length / 2] / 1e3);
+                }
             }
             System.out.println(args[1] + " p50 us:" + medians);
         }
     }
 
     private static long[] cycles(URI uri, int count) throws Exception {
-        try (RemoteSpace a = RemoteSpace.open(uri); RemoteSpace b = RemoteSpace.open(uri)) {
+        RemoteSpace.Options options = RemoteSpace.Options.defaults()
+                .binary(Boolean.parseBoolean(System.getProperty("cycle.binary", "true")));
+        try (RemoteSpace a = RemoteSpace.open(uri, options); RemoteSpace b = RemoteSpace.open(uri, options)) {
             String suffix = Long.toString(System.nanoTime());
             ContainerRef requests = a.createContainer(ContainerSpec.of(Order.FIFO).named("REQUEST" + suffix));
             ContainerRef answers = a.createContainer(ContainerSpec.of(Order.LIFO).withKeyView().named("ANSWER"
