@@ -280,7 +280,7 @@ final class BinaryWireReader extends WireReader {
         int kind = readByte();
         Order order = null;
         String key = null;
-        int index = -1;
+        Integer index = null;
         Template template = null;
         switch (kind) {
             case BinaryWire.SELECTOR_ORDER -> {
@@ -299,21 +299,7 @@ final class BinaryWireReader extends WireReader {
         if (wanted < 0 || wanted > limits.maxCount()) {
             throw new WireFormatException("count must be \"all\" or in 1.." + limits.maxCount() + "; was " + wanted);
         }
-        int count = wanted == 0 ? Selector.ALL : (int) wanted;
-        try {
-            if (order != null) {
-                return Selector.order(order, count);
-            }
-            if (key != null) {
-                return Selector.key(key, count);
-            }
-            if (template != null) {
-                return Selector.template(template, count);
-            }
-            return Selector.vector(index, count);
-        } catch (IllegalArgumentException e) {
-            throw new WireFormatException(e.getMessage());
-        }
+        return selector(order, key, index, template, wanted == 0 ? Selector.ALL : (int) wanted);
     }
 
     @Override

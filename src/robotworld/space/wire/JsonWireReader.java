@@ -369,20 +369,7 @@ final class JsonWireReader extends WireReader {
         if (kinds != 1) {
             throw new WireFormatException("a selector has exactly one of 'order', 'key', 'vector', 'template'");
         }
-        try {
-            if (order != null) {
-                return Selector.order(order, count);
-            }
-            if (key != null) {
-                return Selector.key(key, count);
-            }
-            if (index != null) {
-                return Selector.vector(index, count);
-            }
-            return Selector.template(template, count);
-        } catch (IllegalArgumentException e) {
-            throw new WireFormatException(e.getMessage());
-        }
+        return selector(order, key, index, template, count);
     }
 
     private int readCount() {

@@ -13,6 +13,7 @@ import robotworld.space.Entry;
 import robotworld.space.Item;
 import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
+import robotworld.space.Order;
 import robotworld.space.Selector;
 import robotworld.space.Template;
 import robotworld.space.Timeout;
@@ -134,6 +135,24 @@ public abstract class WireReader implements AutoCloseable {
     public abstract void close();
 
     // ---- shared by both forms ----
+
+    /** A selector of the one kind that was given (the others null); a value the space refuses is a format error. */
+    static Selector selector(Order order, String key, Integer index, Template template, int count) {
+        try {
+            if (order != null) {
+                return Selector.order(order, count);
+            }
+            if (key != null) {
+                return Selector.key(key, count);
+            }
+            if (index != null) {
+                return Selector.vector(index, count);
+            }
+            return Selector.template(template, count);
+        } catch (IllegalArgumentException e) {
+            throw new WireFormatException(e.getMessage());
+        }
+    }
 
     /** A cref read from the wire, checked and translated to the space's own form. */
     static ContainerRef cref(CrefMapping crefs, String id, String space) {
