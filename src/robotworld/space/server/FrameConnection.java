@@ -23,9 +23,12 @@ import robotworld.space.wire.WireError;
  * then reads on (the client's next request is usually not there yet, and the connection waits for it without a
  * thread). With an engine whose calls may block (a cluster) each request runs on a pool thread.
  *
- * <p>Reading and answering take turns: at most one request is in hand. So only one thread at a time reads the
- * buffer, and an answer written while its request is still being dispatched only marks that reading goes on; the
- * dispatching thread does it, which keeps the stack flat however many requests a client sends back to back.
+ * <p>At most one request is in hand: the next is read once the answer to the last is written. One thread at a time
+ * reads the buffer ({@link #readOn}); an answer written while a thread reads (the dispatching one, say) leaves it a
+ * note to read on, which keeps the stack flat however many requests a client sends back to back. While a request is
+ * in hand the connection stays registered for reading, so a client that closes it is noticed at once, and an
+ * answer sent from another selector's thread does not have to wake this connection's selector to register it again
+ * (that wake-up held the JDK selector's wake-up lock, which showed as stalls of the selector threads).
  */
 final class FrameConnection extends AbstractConnection.NonBlocking implements Connection.UpgradeTo {
 
@@ -36,10 +39,10 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
     private final SpaceOperations operations;
     private final int maxFrame;
     private ByteBuffer in = ByteBuffer.allocate(INITIAL_BUFFER).flip(); // flush mode: position..limit unread
-    /** Guarded by this: a request is being handed to its operation on the reading thread. */
-    private boolean dispatching;
-    /** Guarded by this: its answer was written meanwhile, so the dispatching thread reads on. */
-    private boolean answeredWhileDispatching;
+    /** Guarded by this: a thread is reading (see {@link #readOn}). */
+    private boolean reading;
+    /** Guarded by this: something happened while a thread was reading, which it looks at before it stops. */
+    private boolean readAgain;
     /** A request is in hand (not yet answered): the connection is not idle then, whatever its timeout says. */
     private volatile boolean inHand;
     private volatile long bytesIn;
@@ -79,22 +82,60 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
         return !inHand && super.onIdleExpired(timeout); // a waiting operation is answered before its bound anyway
     }
 
-    /** Reads until a request is in hand (and dispatches it) or no bytes are left; then waits for more without a thread. */
+    /**
+     * Reads until a request is in hand (and dispatches it) or no bytes are left; then waits for more without a thread.
+     * One thread at a time: one that comes while another reads (an answer written meanwhile, bytes arriving) leaves
+     * it a note to go round once more.
+     */
     private void readOn() {
+        synchronized (this) {
+            if (reading) {
+                readAgain = true;
+                return;
+            }
+            reading = true;
+        }
+        while (true) {
+            readWhatIsThere();
+            synchronized (this) {
+                if (!readAgain) {
+                    reading = false;
+                    return;
+                }
+                readAgain = false;
+            }
+        }
+    }
+
+    /**
+     * Dispatches the whole requests in the buffer and reads on. While a request is in hand the connection stays
+     * registered for reading: the client sends nothing then, so what wakes it is the client closing the connection
+     * (noticed at once, not when the answer finds it gone), and the answer, sent from whichever thread completes
+     * the operation, finds reading already armed and need not wake this connection's selector to arm it. Bytes that
+     * come while a request is in hand wait in the buffer until its answer is written.
+     */
+    private void readWhatIsThere() {
         try {
             while (true) {
-                Request request = nextRequest();
-                if (request == Request.BROKEN) {
-                    return; // answered with an error; the connection closes after it
-                }
-                if (request != null) {
-                    if (!dispatch(request)) {
-                        return; // its answer will read on
+                if (!inHand) {
+                    Request request = nextRequest();
+                    if (request == Request.BROKEN) {
+                        return; // answered with an error; the connection closes after it
                     }
-                    continue;
+                    if (request != null) {
+                        dispatch(request);
+                        if (inHand) {
+                            armReading(); // its answer will come from another thread
+                            return;
+                        }
+                        continue;
+                    }
                 }
                 if (!in.hasRemaining() || in.limit() == in.capacity()) {
                     compactOrGrow();
+                    if (inHand && in.limit() == in.capacity()) {
+                        return; // full while a request is in hand: read on once it is answered
+                    }
                 }
                 int read = getEndPoint().fill(in);
                 if (read < 0) {
@@ -103,10 +144,13 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
                     return;
                 }
                 if (read == 0) {
-                    fillInterested();
+                    armReading();
                     return;
                 }
                 bytesIn += read;
+                if (inHand) {
+                    return; // sent before the answer: kept until the answer is written, which reads on
+                }
             }
         } catch (IOException e) {
             close(); // the socket failed (reset by the client, say): nothing to answer
@@ -116,17 +160,17 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
         }
     }
 
-    /**
-     * Hands a request to its operation.
-     *
-     * @return whether the answer was written meanwhile, so that this thread reads on
-     */
-    private boolean dispatch(Request request) {
+    /** Registers for reading unless already registered (an answer may come while reading is armed). */
+    private void armReading() {
+        if (!isFillInterested()) {
+            fillInterested();
+        }
+    }
+
+    /** Hands a request to its operation; its answer may be written before this returns. */
+    private void dispatch(Request request) {
         messagesIn++;
         inHand = true;
-        synchronized (this) {
-            dispatching = true;
-        }
         boolean withToken = state.token != null && request.token != null && state.token.acceptsToken(request.token);
         FrameExchange exchange = new FrameExchange(this, state.wire,
                 state.clients.waitingClient(getEndPoint().getRemoteSocketAddress(), withToken));
@@ -141,12 +185,6 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
             getExecutor().execute(() -> perform(request, exchange));
         } else {
             perform(request, exchange);
-        }
-        synchronized (this) {
-            dispatching = false;
-            boolean readOn = answeredWhileDispatching;
-            answeredWhileDispatching = false;
-            return readOn;
         }
     }
 
@@ -191,12 +229,6 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
                 getEndPoint().shutdownOutput();
                 close();
                 return;
-            }
-            synchronized (FrameConnection.this) {
-                if (dispatching) {
-                    answeredWhileDispatching = true;
-                    return;
-                }
             }
             readOn();
         }

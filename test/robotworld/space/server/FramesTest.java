@@ -182,6 +182,38 @@ class FramesTest {
     }
 
     @Test
+    void aClientThatClosesItsConnectionWhileItsTakeWaitsIsNoticedAtOnce() throws Exception {
+        try (SpaceServer server = start(null)) {
+            Framed taker = new Framed(server.uri());
+            Answer created = taker.exchange("create", "{\"spec\":{\"order\":\"fifo\"}}");
+            String cref = created.body().substring(created.body().indexOf('{', 1), created.body().lastIndexOf('}'));
+            taker.send("take", null, null, "{\"container\":" + cref
+                    + ",\"timeout\":15000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"t1\"}");
+            long deadline = System.nanoTime() + 5_000_000_000L;
+            while (server.space().describeContainer(RemoteLookup.ref(server, cref)).blocked() < 1) {
+                assertTrue(System.nanoTime() < deadline, "the take never waited");
+                Thread.sleep(5);
+            }
+            assertEquals(1, server.connectionKinds().stream().filter("FrameConnection"::equals).count());
+            taker.close();
+            // the connection is closed well before the take's 15 s run out (its count against the limits with it)
+            deadline = System.nanoTime() + 3_000_000_000L;
+            while (server.connectionKinds().contains("FrameConnection")) {
+                assertTrue(System.nanoTime() < deadline, "still open: " + server.connectionKinds());
+                Thread.sleep(10);
+            }
+        }
+    }
+
+    /** The container a cref object of the wire names, as the server's own space knows it. */
+    private static final class RemoteLookup {
+        static robotworld.space.ContainerRef ref(SpaceServer server, String crefJson) {
+            String id = crefJson.replaceAll(".*\"cref\":\"([^\"]+)\".*", "$1");
+            return new robotworld.space.ContainerRef(server.space().spaceUri(), id);
+        }
+    }
+
+    @Test
     void aFrameThatCannotBeReadGets400AndItsConnectionClosesWhileTheServerKeepsServing() throws Exception {
         try (SpaceServer server = start(null)) {
             try (Framed framed = new Framed(server.uri())) {
