@@ -296,7 +296,8 @@ public final class SafetySupervisor implements AutoCloseable {
     /**
      * Ends the safety layer: puts every actuator into its safe state (if {@link #stopAll} was not called for the end
      * of the program yet), sends a last heartbeat saying the program ended, publishes what is left to publish
-     * (each for at most half a second), and stops the threads. Idempotent.
+     * (each for at most half a second; the last heartbeat may first wait as long for one still under way), and stops
+     * the threads. Idempotent.
      */
     public void close(StopCause cause, String reason) {
         if (closed) {

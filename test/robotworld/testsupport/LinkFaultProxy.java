@@ -83,7 +83,12 @@ public final class LinkFaultProxy implements AutoCloseable {
         pipe.start();
     }
 
-    /** What clients sent through the proxy so far (all connections, in arrival order per read). */
+    /** Keeps a copy of what clients send from now on, for {@link #clientBytes()} (off by default: soaks relay much). */
+    public void captureClientBytes() {
+        capturing = true;
+    }
+
+    /** What clients sent through the proxy since {@link #captureClientBytes()} (all connections, in arrival order per read). */
     public byte[] clientBytes() {
         synchronized (sent) {
             return sent.toByteArray();
@@ -91,6 +96,7 @@ public final class LinkFaultProxy implements AutoCloseable {
     }
 
     private final java.io.ByteArrayOutputStream sent = new java.io.ByteArrayOutputStream();
+    private volatile boolean capturing;
 
     /** How many connections clients have made. */
     public int connections() {
@@ -161,7 +167,7 @@ public final class LinkFaultProxy implements AutoCloseable {
                     int n;
                     while ((n = in.read(buffer)) >= 0) {
                         if (!silent && out != null) {
-                            if (from == client) {
+                            if (capturing && from == client) {
                                 synchronized (sent) {
                                     sent.write(buffer, 0, n);
                                 }

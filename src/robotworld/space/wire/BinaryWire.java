@@ -77,13 +77,19 @@ public final class BinaryWire {
     private BinaryWire() {
     }
 
+    /** The codes by field name, built once from {@link #FIELDS}: a writer looks one up per field. */
+    private static final java.util.Map<String, Integer> CODES = codes();
+
+    private static java.util.Map<String, Integer> codes() {
+        java.util.Map<String, Integer> codes = new java.util.HashMap<>();
+        for (int i = 0; i < FIELDS.size(); i++) {
+            codes.put(FIELDS.get(i).name(), i + 1);
+        }
+        return java.util.Map.copyOf(codes);
+    }
+
     /** The code of field {@code name}, or 0 if the binary form has no such field. */
     static int code(String name) {
-        for (int i = 0; i < FIELDS.size(); i++) {
-            if (FIELDS.get(i).name().equals(name)) {
-                return i + 1;
-            }
-        }
-        return 0;
+        return CODES.getOrDefault(name, 0);
     }
 }

@@ -17,13 +17,11 @@ import robotworld.space.ContainerSpec;
 import robotworld.space.Entry;
 import robotworld.space.IntEntry;
 import robotworld.space.Item;
-import robotworld.space.NotificationMode;
 import robotworld.space.Operation;
 import robotworld.space.Order;
 import robotworld.space.Selector;
 import robotworld.space.StringEntry;
 import robotworld.space.Template;
-import robotworld.space.Timeout;
 import robotworld.space.Tuple;
 import robotworld.space.Uniqueness;
 
@@ -104,15 +102,6 @@ final class JsonWireReader extends WireReader {
         return longValue(token, what);
     }
 
-    /** An integer in {@code [min, max]}. */
-    public int readInt(String what, int min, int max) {
-        long value = readLong(what);
-        if (value < min || value > max) {
-            throw new WireFormatException(what + " must be in " + min + ".." + max + "; was " + value);
-        }
-        return (int) value;
-    }
-
     /** A string of at most the string limit. */
     public String readString(String what) {
         JsonToken token = next();
@@ -144,15 +133,6 @@ final class JsonWireReader extends WireReader {
             return false;
         }
         throw new WireFormatException(what + " must be true or false, found " + describe(token));
-    }
-
-    /** A timeout in milliseconds: -1 (infinite), 0 (try once) or more. */
-    public Timeout readTimeout() {
-        long millis = readLong("timeout");
-        if (millis < -1) {
-            throw new WireFormatException("timeout must be -1 (infinite), 0 (try once) or positive; was " + millis);
-        }
-        return Timeout.ofMillis(millis);
     }
 
     /** A list of strings (at most {@code max}). */
@@ -432,16 +412,6 @@ final class JsonWireReader extends WireReader {
             operations.add(Wire.operation(name));
         }
         return operations;
-    }
-
-    /** A notification mode name. */
-    public NotificationMode readMode() {
-        return Wire.mode(readString("mode"));
-    }
-
-    /** An operation name. */
-    public Operation readOperation() {
-        return Wire.operation(readString("operation"));
     }
 
     // ---- low level ----

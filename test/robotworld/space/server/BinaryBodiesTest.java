@@ -331,7 +331,7 @@ class BinaryBodiesTest {
 
     /** The operations one client sent in frames (after its description and upgrade as HTTP), each with its form. */
     private static List<String> bodiesSent(SpaceServer server, RemoteSpace.Options options) throws Exception {
-        try (LinkFaultProxy proxy = new LinkFaultProxy(server.port());
+        try (LinkFaultProxy proxy = capturing(new LinkFaultProxy(server.port()));
              RemoteSpace client = RemoteSpace.open(URI.create("http://127.0.0.1:"
                      + proxy.portName().substring(proxy.portName().lastIndexOf(':') + 1) + server.uri().getPath()),
                      options)) {
@@ -344,6 +344,11 @@ class BinaryBodiesTest {
             // confirmations sent on their own, if any, are not what this is about
             return framesIn(proxy.clientBytes()).stream().filter(sent -> !sent.startsWith("ack:")).toList();
         }
+    }
+
+    private static LinkFaultProxy capturing(LinkFaultProxy proxy) {
+        proxy.captureClientBytes();
+        return proxy;
     }
 
     private static List<String> framesIn(byte[] stream) {

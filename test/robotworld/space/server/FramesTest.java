@@ -190,7 +190,7 @@ class FramesTest {
             taker.send("take", null, null, "{\"container\":" + cref
                     + ",\"timeout\":15000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"t1\"}");
             long deadline = System.nanoTime() + 5_000_000_000L;
-            while (server.space().describeContainer(RemoteLookup.ref(server, cref)).blocked() < 1) {
+            while (server.space().describeContainer(internalRef(server, cref)).blocked() < 1) {
                 assertTrue(System.nanoTime() < deadline, "the take never waited");
                 Thread.sleep(5);
             }
@@ -206,11 +206,9 @@ class FramesTest {
     }
 
     /** The container a cref object of the wire names, as the server's own space knows it. */
-    private static final class RemoteLookup {
-        static robotworld.space.ContainerRef ref(SpaceServer server, String crefJson) {
-            String id = crefJson.replaceAll(".*\"cref\":\"([^\"]+)\".*", "$1");
-            return new robotworld.space.ContainerRef(server.space().spaceUri(), id);
-        }
+    private static robotworld.space.ContainerRef internalRef(SpaceServer server, String crefJson) {
+        String id = crefJson.replaceAll(".*\"cref\":\"([^\"]+)\".*", "$1");
+        return new robotworld.space.ContainerRef(server.space().spaceUri(), id);
     }
 
     @Test
