@@ -29,6 +29,8 @@
       <target name="run" depends="compile"
               description="run this participant: -Drwe.space.url=..., -Drwe.port.PARTICIPANT.bus=... are passed on">
         <java classname="${{main.class}}" fork="true" failonerror="true">
+          <!-- G1 refines dirty cards in its pauses, not in bursts that hold up module calls -->
+          <jvmarg value="-XX:G1ConcRefinementThreads=0"/>
           <classpath><pathelement location="build/classes"/><path refid="libraries"/></classpath>
           <syspropertyset><propertyref prefix="rwe."/></syspropertyset>
         </java>

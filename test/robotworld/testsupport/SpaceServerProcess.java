@@ -53,6 +53,7 @@ public final class SpaceServerProcess implements AutoCloseable {
             }
         }
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(robotworld.program.JvmOptions.LATENCY); // as rwe starts it
         command.addAll(jvmOptions);
         command.addAll(List.of("-cp", classPath, "robotworld.explorer.cli.Rwe", "space",
                 "--port", "0"));

@@ -11,6 +11,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import robotworld.program.JvmOptions;
+
 /**
  * The demo's clustered space: {@code rwe space --cluster} processes on loopback (free ports), the first started
  * alone and the others joining it; the space's URL is their servers' URLs separated by commas. One of them can be
@@ -39,6 +41,7 @@ final class DemoCluster implements AutoCloseable {
                 List<String> command = new ArrayList<>();
                 command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
                 command.add("-Xmx256m");
+                command.addAll(JvmOptions.LATENCY);
                 command.addAll(JDK_ACCESS);
                 command.addAll(List.of("-cp", System.getProperty("java.class.path"), "robotworld.explorer.cli.Rwe",
                         "space", "--cluster", name, "--port", "0", "--member-port", "0", "--min-members",

@@ -8,6 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
+import robotworld.program.JvmOptions;
+
 /** A generated program running in its own JVM from its project (build/classes + lib/*), output to a log file. */
 final class ProgramProcess implements AutoCloseable {
 
@@ -24,6 +26,7 @@ final class ProgramProcess implements AutoCloseable {
     static ProgramProcess start(Path project, String mainClass, List<String> properties) throws IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
                 .toString()));
+        command.addAll(JvmOptions.LATENCY);
         command.addAll(properties);
         command.addAll(List.of("-cp", project.resolve("build/classes") + File.pathSeparator
                 + project.resolve("lib") + File.separator + "*", mainClass));
