@@ -2,15 +2,19 @@ package robotworld.space.server;
 
 import java.io.IOException;
 import java.nio.channels.SelectableChannel;
+import java.nio.channels.SelectionKey;
 import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.util.Iterator;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executor;
 
 import org.eclipse.jetty.io.EndPoint;
+import org.eclipse.jetty.io.ManagedSelector;
 import org.eclipse.jetty.io.SelectableChannelEndPoint;
 import org.eclipse.jetty.io.SelectorManager;
+import org.eclipse.jetty.io.SocketChannelEndPoint;
 import org.eclipse.jetty.server.ConnectionFactory;
 import org.eclipse.jetty.server.Server;
 import org.eclipse.jetty.server.ServerConnector;
@@ -28,11 +32,14 @@ import org.eclipse.jetty.util.thread.Scheduler;
  *   <li>A connection accepted while the selectors stop may never be served or closed. So every accepted connection
  *   is tracked until Jetty closes it, and {@link #closeLeftOpen()} closes the rest once the server has stopped.</li>
  * </ul>
+ * Each selector also gets its {@link AnswerRound}, which its connections' end points carry ({@link RoundEndPoint}).
  */
 final class ClosingConnector extends ServerConnector {
 
     /** Accepted and not yet closed by Jetty; added by the accepting selector before the connection is served. */
     private final Set<SelectableChannel> accepted = ConcurrentHashMap.newKeySet();
+    /** Each selector's answer round; filled as the selectors are made (when the connector starts). */
+    private final java.util.Map<ManagedSelector, AnswerRound> rounds = new ConcurrentHashMap<>();
     /** The listening socket: without acceptor threads, Jetty's close() leaves it to the selectors. */
     private volatile ServerSocketChannel listening;
 
@@ -57,6 +64,13 @@ final class ClosingConnector extends ServerConnector {
             }
 
             @Override
+            protected ManagedSelector newSelector(int id) {
+                ManagedSelector selector = super.newSelector(id);
+                rounds.put(selector, new AnswerRound(selector));
+                return selector;
+            }
+
+            @Override
             protected void endPointClosed(EndPoint endPoint) {
                 if (endPoint instanceof SelectableChannelEndPoint channelEndPoint) {
                     accepted.remove(channelEndPoint.getChannel());
@@ -64,6 +78,24 @@ final class ClosingConnector extends ServerConnector {
                 super.endPointClosed(endPoint);
             }
         };
+    }
+
+    @Override
+    protected SocketChannelEndPoint newEndPoint(SocketChannel channel, ManagedSelector selector, SelectionKey key) {
+        RoundEndPoint endPoint = new RoundEndPoint(channel, selector, key, getScheduler(), rounds.get(selector));
+        endPoint.setIdleTimeout(getIdleTimeout());
+        return endPoint;
+    }
+
+    /** A connection's end point, with the answer round of the selector that serves it. */
+    static final class RoundEndPoint extends SocketChannelEndPoint {
+        final AnswerRound round;
+
+        RoundEndPoint(SocketChannel channel, ManagedSelector selector, SelectionKey key, Scheduler scheduler,
+                      AnswerRound round) {
+            super(channel, selector, key, scheduler);
+            this.round = round;
+        }
     }
 
     @Override

@@ -69,12 +69,21 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
     @Override
     public void onOpen() {
         super.onOpen();
+        enterRound();
         readOn();
     }
 
     @Override
     public void onFillable() {
+        enterRound();
         readOn();
+    }
+
+    /** Answers this thread writes from here to the end of its selector's round go out together (AnswerRound). */
+    private void enterRound() {
+        if (getEndPoint() instanceof ClosingConnector.RoundEndPoint endPoint && endPoint.round != null) {
+            endPoint.round.enter();
+        }
     }
 
     @Override
@@ -201,7 +210,9 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
         ByteBuffer frame = ByteBuffer.allocate(4 + 3 + body.length);
         frame.putInt(3 + body.length).putShort((short) status).put((byte) flags).put(body).flip();
         boolean closing = (flags & Frames.CLOSING) != 0;
-        getEndPoint().write(new Written(frame.remaining(), closing), frame);
+        Written written = new Written(frame.remaining(), closing);
+        EndPoint endPoint = getEndPoint();
+        AnswerRound.write(() -> endPoint.write(written, frame));
     }
 
     /** The answer could not be sent: the connection is given up (the client sees it closed). */
