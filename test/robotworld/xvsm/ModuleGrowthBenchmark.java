@@ -22,7 +22,7 @@ import robotworld.space.server.SpaceServer;
  * calls) and the threads of the process by role, taken while every module waits, after the threads started for the
  * start-up burst have ended (21 s, {@code bench.growth.settleMillis}): the server's ({@code space-server*}), the
  * space clients' ({@code space-client*}) and the Local sides' ({@code xvsm-serve*}). The verdict then compares the
- * largest N with the smallest in {@code bench.growth.rounds} rounds, each measuring both in turn, by the medians of
+ * largest N with the smallest in {@code bench.growth.rounds} rounds (5), each measuring both in turn, by the medians of
  * the rounds' ratios: a single measurement of the smallest swings with the JIT and the machine (one-module p50s of
  * 79 to 155 us in consecutive runs).
  */
@@ -34,7 +34,7 @@ public final class ModuleGrowthBenchmark {
     private static final int CALLS = Integer.getInteger("bench.growth.calls", 2_000);
     private static final long WARMUP_MILLIS = Long.getLong("bench.growth.warmupMillis", 4_000);
     private static final long SETTLE_MILLIS = Long.getLong("bench.growth.settleMillis", 21_000);
-    private static final int ROUNDS = Integer.getInteger("bench.growth.rounds", 3);
+    private static final int ROUNDS = Integer.getInteger("bench.growth.rounds", 5);
 
     private ModuleGrowthBenchmark() {
     }
