@@ -6,6 +6,7 @@ import java.nio.channels.SelectionKey;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.Iterator;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executor;
@@ -39,7 +40,7 @@ final class ClosingConnector extends ServerConnector {
     /** Accepted and not yet closed by Jetty; added by the accepting selector before the connection is served. */
     private final Set<SelectableChannel> accepted = ConcurrentHashMap.newKeySet();
     /** Each selector's answer round; filled as the selectors are made (when the connector starts). */
-    private final java.util.Map<ManagedSelector, AnswerRound> rounds = new ConcurrentHashMap<>();
+    private final Map<ManagedSelector, AnswerRound> rounds = new ConcurrentHashMap<>();
     /** The listening socket: without acceptor threads, Jetty's close() leaves it to the selectors. */
     private volatile ServerSocketChannel listening;
 
