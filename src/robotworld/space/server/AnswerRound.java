@@ -18,7 +18,8 @@ import org.eclipse.jetty.io.ManagedSelector;
  * started and wait a whole round more on every call, while another pair always made the round it was sent for:
  * with 50 pairs, the most served made 2 to 5 times the calls of the least, and the least served made the tail.
  * Written at the end of the round, every answer of a round goes out together and every client's next request
- * competes for the same next round.
+ * competes for the same next round. For the same reason a connection answered at a round's end does not read on
+ * there ({@link #atRoundEnd()}): its client's next request waits for the next {@code select()} with all the others.
  *
  * <p>Contract: {@link #write} runs the write at once unless called on the thread that works through this
  * selector's rounds, inside one ({@link #enter} was called there for a connection of this selector); then it runs
@@ -39,6 +40,8 @@ final class AnswerRound implements ManagedSelector.SelectorUpdate {
     private final AtomicBoolean submitted = new AtomicBoolean();
     /** The thread that ran this selector's last update: the one working through its rounds. */
     private volatile Thread worker;
+    /** The thread writing this round's answers at its end, while it does; only that thread reads it. */
+    private Thread endingOn;
     private volatile long learntAt;
 
     AnswerRound(ManagedSelector selector) {
@@ -71,6 +74,16 @@ final class AnswerRound implements ManagedSelector.SelectorUpdate {
         }
     }
 
+    /**
+     * True while the current thread writes the answers of its selector's round, at the round's end: a connection
+     * answered then should wait for the next {@code select()} to read its client's next request, not read on at
+     * once (see {@code FrameConnection}).
+     */
+    static boolean atRoundEnd() {
+        AnswerRound round = CURRENT.get();
+        return round != null && round.endingOn == Thread.currentThread();
+    }
+
     private void learn() {
         learntAt = System.nanoTime();
         if (submitted.compareAndSet(false, true)) {
@@ -88,14 +101,19 @@ final class AnswerRound implements ManagedSelector.SelectorUpdate {
         }
         CURRENT.set(this);
         submitted.set(false);
-        Runnable write;
-        while ((write = writes.poll()) != null) {
-            try {
-                write.run(); // a write that completes reads its connection on, which may answer again: run here too
-            } catch (RuntimeException e) {
-                System.getLogger(AnswerRound.class.getName()).log(System.Logger.Level.WARNING,
-                        "writing an answer failed", e);
+        endingOn = current;
+        try {
+            Runnable write;
+            while ((write = writes.poll()) != null) {
+                try {
+                    write.run(); // a write may read on bytes its client sent early, and answer again: run here too
+                } catch (RuntimeException e) {
+                    System.getLogger(AnswerRound.class.getName()).log(System.Logger.Level.WARNING,
+                            "writing an answer failed", e);
+                }
             }
+        } finally {
+            endingOn = null;
         }
     }
 }

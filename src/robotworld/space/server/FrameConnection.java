@@ -169,6 +169,24 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
         }
     }
 
+    /**
+     * After an answer written at the end of its selector's round: true if reading on can wait for the selector's
+     * next {@code select()}, which then finds the client's next request with those of every other client answered
+     * in the round. Read on at once, a client that ran the moment its answer woke it (taking the CPU from the
+     * selector thread, which then wrote the round's other answers later) had its next request served within the
+     * same round, again and again, while the others waited a round: with 50 busy pairs, about half of all requests
+     * went that way, and the pairs that got them made up to three times the calls of the others.
+     *
+     * <p>Safe because, while no thread is reading this connection and no bytes wait in its buffer, reading is armed
+     * (or Jetty is about to call {@link #onFillable}): a request in hand keeps it armed. Bytes already buffered
+     * (sent before the answer) are read on at once, as is a connection another thread is reading.
+     */
+    private boolean waitsForNextRound() {
+        synchronized (this) {
+            return !reading && !in.hasRemaining();
+        }
+    }
+
     /** Registers for reading unless already registered (an answer may come while reading is armed). */
     private void armReading() {
         if (!isFillInterested()) {
@@ -239,6 +257,9 @@ final class FrameConnection extends AbstractConnection.NonBlocking implements Co
             if (closing) {
                 getEndPoint().shutdownOutput();
                 close();
+                return;
+            }
+            if (AnswerRound.atRoundEnd() && waitsForNextRound()) {
                 return;
             }
             readOn();

@@ -182,6 +182,27 @@ class FramesTest {
     }
 
     @Test
+    void aRequestSentBeforeTheAnswerToAWaitingTakeIsServedOnceThatAnswerIsOut() throws Exception {
+        try (SpaceServer server = start(null); Framed taker = new Framed(server.uri());
+             Framed writer = new Framed(server.uri())) {
+            Answer created = taker.exchange("create", "{\"spec\":{\"order\":\"fifo\"}}");
+            String cref = created.body().substring(created.body().indexOf('{', 1), created.body().lastIndexOf('}'));
+            taker.send("take", null, null, "{\"container\":" + cref
+                    + ",\"timeout\":5000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"t1\"}");
+            // sent while the take waits: the server reads it and keeps it until the take's answer is written
+            taker.send("describe", null, null, "{\"container\":" + cref + "}");
+            Thread.sleep(100);
+            // the write is handled on a selector thread; the take's answer goes out at the end of its round, and
+            // reading on there must not leave the request already read waiting for bytes that will not come
+            assertEquals(200, writer.exchange("write", "{\"container\":" + cref
+                    + ",\"timeout\":0,\"items\":[{\"entry\":42}],\"call\":\"w1\"}").status());
+            assertEquals("{\"ack\":true,\"entries\":[42]}", taker.receive().body());
+            Answer described = taker.receive();
+            assertEquals(200, described.status(), described.body());
+        }
+    }
+
+    @Test
     void aClientThatClosesItsConnectionWhileItsTakeWaitsIsNoticedAtOnce() throws Exception {
         try (SpaceServer server = start(null)) {
             Framed taker = new Framed(server.uri());
