@@ -3,10 +3,10 @@ package robotworld.space.server;
 import java.io.IOException;
 import java.nio.channels.SelectableChannel;
 import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.Iterator;
-import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executor;
@@ -39,8 +39,6 @@ final class ClosingConnector extends ServerConnector {
 
     /** Accepted and not yet closed by Jetty; added by the accepting selector before the connection is served. */
     private final Set<SelectableChannel> accepted = ConcurrentHashMap.newKeySet();
-    /** Each selector's answer round; filled as the selectors are made (when the connector starts). */
-    private final Map<ManagedSelector, AnswerRound> rounds = new ConcurrentHashMap<>();
     /** The listening socket: without acceptor threads, Jetty's close() leaves it to the selectors. */
     private volatile ServerSocketChannel listening;
 
@@ -66,9 +64,7 @@ final class ClosingConnector extends ServerConnector {
 
             @Override
             protected ManagedSelector newSelector(int id) {
-                ManagedSelector selector = super.newSelector(id);
-                rounds.put(selector, new AnswerRound(selector));
-                return selector;
+                return new RoundSelector(this, id);
             }
 
             @Override
@@ -83,9 +79,27 @@ final class ClosingConnector extends ServerConnector {
 
     @Override
     protected SocketChannelEndPoint newEndPoint(SocketChannel channel, ManagedSelector selector, SelectionKey key) {
-        RoundEndPoint endPoint = new RoundEndPoint(channel, selector, key, getScheduler(), rounds.get(selector));
+        AnswerRound round = selector instanceof RoundSelector withRound ? withRound.round : null;
+        RoundEndPoint endPoint = new RoundEndPoint(channel, selector, key, getScheduler(), round);
         endPoint.setIdleTimeout(getIdleTimeout());
         return endPoint;
+    }
+
+    /** A selector with its answer round, which it tells how many connections each {@code select()} found ready. */
+    static final class RoundSelector extends ManagedSelector {
+        final AnswerRound round;
+
+        RoundSelector(SelectorManager manager, int id) {
+            super(manager, id);
+            round = new AnswerRound(this);
+        }
+
+        @Override
+        protected int select(Selector selector) throws IOException {
+            int ready = super.select(selector);
+            round.selected(ready);
+            return ready;
+        }
     }
 
     /** A connection's end point, with the answer round of the selector that serves it. */

@@ -35,7 +35,22 @@ class AnswerRoundTest {
     }
 
     @Test
-    void oneWriteCompletesTheWaitsOfManyConnectionsAndEachGetsItsAnswer() throws Exception {
+    void oneWriteCompletesTheWaitsOfManyConnectionsAndEachGetsItsAnswerAtItsRoundsEnd() throws Exception {
+        int before = AnswerRound.writeAtOnceUpTo;
+        AnswerRound.writeAtOnceUpTo = 0; // every round defers its answers to its end, even one with one connection
+        try {
+            oneWriteCompletesTheWaitsOfManyConnections();
+        } finally {
+            AnswerRound.writeAtOnceUpTo = before;
+        }
+    }
+
+    @Test
+    void aRoundWithOneReadyConnectionWritesItsAnswersAtOnceAndEachGetsItsAnswer() throws Exception {
+        oneWriteCompletesTheWaitsOfManyConnections();
+    }
+
+    private static void oneWriteCompletesTheWaitsOfManyConnections() throws Exception {
         int waiting = 20;
         ExecutorService threads = Executors.newCachedThreadPool();
         List<RemoteSpace> clients = new ArrayList<>();
