@@ -23,7 +23,7 @@ import org.eclipse.jetty.io.ManagedSelector;
  *
  * <p>A round whose {@code select()} found only one connection ready has no other client to be fair to: its answers
  * go out at once, so that their clients work while the selector thread finishes the request (a module call on two
- * CPUs took about 3 µs less that way, 5 %).
+ * CPUs took about 2 µs less that way, 4 %).
  *
  * <p>Contract: {@link #write} runs the write at once unless called on the thread that works through this
  * selector's rounds, inside one ({@link #enter} was called there for a connection of this selector) whose
