@@ -87,6 +87,33 @@ class UnreachableServerTest {
     }
 
     @Test
+    void aTakeWaitingWithoutAThreadOnASilentServerEndsUnavailableWithinTheBound() throws Exception {
+        RemoteSpace client = client();
+        ContainerRef jobs = client.createContainer(ContainerSpec.of(Order.FIFO).named("jobs"));
+        blackhole.blackhole();
+
+        long timeoutMillis = 500;
+        java.util.concurrent.CompletableFuture<Object> outcome = new java.util.concurrent.CompletableFuture<>();
+        long started = System.nanoTime();
+        client.takeLater(jobs, Timeout.ofMillis(timeoutMillis), new robotworld.space.Selector[0],
+                new robotworld.space.SpaceEngine.Completion<>() {
+                    @Override
+                    public void completed(List<Entry> entries) {
+                        outcome.complete(entries);
+                    }
+
+                    @Override
+                    public void failed(robotworld.space.SpaceException failure) {
+                        outcome.complete(failure);
+                    }
+                });
+        Object ended = outcome.get(timeoutMillis + 3 * ALLOWANCE_MILLIS + SLACK_MILLIS, TimeUnit.MILLISECONDS);
+        long tookMillis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
+        assertTrue(ended instanceof SpaceUnavailableException, "ended with " + ended);
+        assertTrue(tookMillis < timeoutMillis + ALLOWANCE_MILLIS + SLACK_MILLIS, "took " + tookMillis + " ms");
+    }
+
+    @Test
     void aServerThatDoesNotAcceptGivesUnavailableWithinTheBound() throws Exception {
         RemoteSpace client = client();
         ContainerRef jobs = client.createContainer(ContainerSpec.of(Order.FIFO).named("jobs"));
