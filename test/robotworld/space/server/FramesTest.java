@@ -167,15 +167,11 @@ class FramesTest {
     void aWaitingTakeIsAnsweredByTheWriteOfAnotherConnection() throws Exception {
         try (SpaceServer server = start(null); Framed taker = new Framed(server.uri());
              Framed writer = new Framed(server.uri())) {
-            Answer created = taker.exchange("create", "{\"spec\":{\"order\":\"fifo\"}}");
-            String cref = created.body().substring(created.body().indexOf('{', 1), created.body().lastIndexOf('}'));
-            taker.send("take", null, null, "{\"container\":" + cref
-                    + ",\"timeout\":5000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"t1\"}");
+            String cref = createFifo(taker);
+            sendTake(taker, cref);
             Thread.sleep(100);
-            assertEquals(200, writer.exchange("write", "{\"container\":" + cref
-                    + ",\"timeout\":0,\"items\":[{\"entry\":42}],\"call\":\"w1\"}").status());
-            Answer taken = taker.receive();
-            assertEquals("{\"ack\":true,\"entries\":[42]}", taken.body());
+            write42(writer, cref);
+            assertEquals(TAKEN_42, taker.receive().body());
             // and the connection reads on after an answer sent from another connection's thread
             assertEquals(200, taker.exchange("describe", "{\"container\":" + cref + "}").status());
         }
@@ -183,23 +179,50 @@ class FramesTest {
 
     @Test
     void aRequestSentBeforeTheAnswerToAWaitingTakeIsServedOnceThatAnswerIsOut() throws Exception {
+        int before = AnswerRound.writeAtOnceUpTo;
+        AnswerRound.writeAtOnceUpTo = 0; // the take's answer waits for the end of the write's round, however small
         try (SpaceServer server = start(null); Framed taker = new Framed(server.uri());
              Framed writer = new Framed(server.uri())) {
-            Answer created = taker.exchange("create", "{\"spec\":{\"order\":\"fifo\"}}");
-            String cref = created.body().substring(created.body().indexOf('{', 1), created.body().lastIndexOf('}'));
-            taker.send("take", null, null, "{\"container\":" + cref
-                    + ",\"timeout\":5000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"t1\"}");
+            String cref = createFifo(taker);
+            sendTake(taker, cref);
             // sent while the take waits: the server reads it and keeps it until the take's answer is written
             taker.send("describe", null, null, "{\"container\":" + cref + "}");
             Thread.sleep(100);
             // the write is handled on a selector thread; the take's answer goes out at the end of its round, and
             // reading on there must not leave the request already read waiting for bytes that will not come
-            assertEquals(200, writer.exchange("write", "{\"container\":" + cref
-                    + ",\"timeout\":0,\"items\":[{\"entry\":42}],\"call\":\"w1\"}").status());
-            assertEquals("{\"ack\":true,\"entries\":[42]}", taker.receive().body());
+            write42(writer, cref);
+            assertEquals(TAKEN_42, taker.receive().body());
             Answer described = taker.receive();
             assertEquals(200, described.status(), described.body());
+            // nothing sent early this time: the connection waits for its next request with the selector's next round
+            sendTake(taker, cref);
+            Thread.sleep(100);
+            write42(writer, cref);
+            assertEquals(TAKEN_42, taker.receive().body());
+            assertEquals(200, taker.exchange("describe", "{\"container\":" + cref + "}").status());
+        } finally {
+            AnswerRound.writeAtOnceUpTo = before;
         }
+    }
+
+    private static final String TAKEN_42 = "{\"ack\":true,\"entries\":[42]}";
+
+    /** Creates a FIFO container over {@code framed}; returns its cref object as the wire writes it. */
+    private static String createFifo(Framed framed) throws IOException {
+        Answer created = framed.exchange("create", "{\"spec\":{\"order\":\"fifo\"}}");
+        return created.body().substring(created.body().indexOf('{', 1), created.body().lastIndexOf('}'));
+    }
+
+    /** Sends a take of one entry that will wait (5 s at most), without reading its answer. */
+    private static void sendTake(Framed taker, String cref) throws IOException {
+        taker.send("take", null, null, "{\"container\":" + cref
+                + ",\"timeout\":5000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"t1\"}");
+    }
+
+    /** Writes the entry 42 over {@code writer}. */
+    private static void write42(Framed writer, String cref) throws IOException {
+        assertEquals(200, writer.exchange("write", "{\"container\":" + cref
+                + ",\"timeout\":0,\"items\":[{\"entry\":42}],\"call\":\"w1\"}").status());
     }
 
     @Test
