@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.net.URI;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -17,6 +18,9 @@ import robotworld.space.ContainerSpec;
 import robotworld.space.EmbeddedSpace;
 import robotworld.space.Entry;
 import robotworld.space.Order;
+import robotworld.space.Selector;
+import robotworld.space.SpaceEngine;
+import robotworld.space.SpaceException;
 import robotworld.space.SpaceUnavailableException;
 import robotworld.space.Timeout;
 import robotworld.space.server.SpaceServer;
@@ -93,20 +97,19 @@ class UnreachableServerTest {
         blackhole.blackhole();
 
         long timeoutMillis = 500;
-        java.util.concurrent.CompletableFuture<Object> outcome = new java.util.concurrent.CompletableFuture<>();
+        CompletableFuture<Object> outcome = new CompletableFuture<>();
         long started = System.nanoTime();
-        client.takeLater(jobs, Timeout.ofMillis(timeoutMillis), new robotworld.space.Selector[0],
-                new robotworld.space.SpaceEngine.Completion<>() {
-                    @Override
-                    public void completed(List<Entry> entries) {
-                        outcome.complete(entries);
-                    }
+        client.takeLater(jobs, Timeout.ofMillis(timeoutMillis), new Selector[0], new SpaceEngine.Completion<>() {
+            @Override
+            public void completed(List<Entry> entries) {
+                outcome.complete(entries);
+            }
 
-                    @Override
-                    public void failed(robotworld.space.SpaceException failure) {
-                        outcome.complete(failure);
-                    }
-                });
+            @Override
+            public void failed(SpaceException failure) {
+                outcome.complete(failure);
+            }
+        });
         Object ended = outcome.get(timeoutMillis + 3 * ALLOWANCE_MILLIS + SLACK_MILLIS, TimeUnit.MILLISECONDS);
         long tookMillis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
         assertTrue(ended instanceof SpaceUnavailableException, "ended with " + ended);

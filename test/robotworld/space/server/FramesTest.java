@@ -168,9 +168,9 @@ class FramesTest {
         try (SpaceServer server = start(null); Framed taker = new Framed(server.uri());
              Framed writer = new Framed(server.uri())) {
             String cref = createFifo(taker);
-            sendTake(taker, cref);
+            sendTake(taker, cref, "t1");
             Thread.sleep(100);
-            write42(writer, cref);
+            write42(writer, cref, "w1");
             assertEquals(TAKEN_42, taker.receive().body());
             // and the connection reads on after an answer sent from another connection's thread
             assertEquals(200, taker.exchange("describe", "{\"container\":" + cref + "}").status());
@@ -184,20 +184,20 @@ class FramesTest {
         try (SpaceServer server = start(null); Framed taker = new Framed(server.uri());
              Framed writer = new Framed(server.uri())) {
             String cref = createFifo(taker);
-            sendTake(taker, cref);
+            sendTake(taker, cref, "t1");
             // sent while the take waits: the server reads it and keeps it until the take's answer is written
             taker.send("describe", null, null, "{\"container\":" + cref + "}");
             Thread.sleep(100);
             // the write is handled on a selector thread; the take's answer goes out at the end of its round, and
             // reading on there must not leave the request already read waiting for bytes that will not come
-            write42(writer, cref);
+            write42(writer, cref, "w1");
             assertEquals(TAKEN_42, taker.receive().body());
             Answer described = taker.receive();
             assertEquals(200, described.status(), described.body());
             // nothing sent early this time: the connection waits for its next request with the selector's next round
-            sendTake(taker, cref);
+            sendTake(taker, cref, "t2");
             Thread.sleep(100);
-            write42(writer, cref);
+            write42(writer, cref, "w2");
             assertEquals(TAKEN_42, taker.receive().body());
             assertEquals(200, taker.exchange("describe", "{\"container\":" + cref + "}").status());
         } finally {
@@ -213,16 +213,16 @@ class FramesTest {
         return created.body().substring(created.body().indexOf('{', 1), created.body().lastIndexOf('}'));
     }
 
-    /** Sends a take of one entry that will wait (5 s at most), without reading its answer. */
-    private static void sendTake(Framed taker, String cref) throws IOException {
+    /** Sends take {@code call} of one entry, which will wait (5 s at most), without reading its answer. */
+    private static void sendTake(Framed taker, String cref, String call) throws IOException {
         taker.send("take", null, null, "{\"container\":" + cref
-                + ",\"timeout\":5000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"t1\"}");
+                + ",\"timeout\":5000,\"selectors\":[{\"order\":\"fifo\"}],\"call\":\"" + call + "\"}");
     }
 
-    /** Writes the entry 42 over {@code writer}. */
-    private static void write42(Framed writer, String cref) throws IOException {
+    /** Writes the entry 42 over {@code writer} as call {@code call}. */
+    private static void write42(Framed writer, String cref, String call) throws IOException {
         assertEquals(200, writer.exchange("write", "{\"container\":" + cref
-                + ",\"timeout\":0,\"items\":[{\"entry\":42}],\"call\":\"w1\"}").status());
+                + ",\"timeout\":0,\"items\":[{\"entry\":42}],\"call\":\"" + call + "\"}").status());
     }
 
     @Test
